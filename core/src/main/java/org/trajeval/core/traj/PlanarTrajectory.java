@@ -1,0 +1,113 @@
+package org.trajeval.core.traj;
+
+import java.util.Arrays;
+
+/**
+ * Planar SE(2) trajectory: timestamps t (s), positions x, y (m) and heading yaw (rad, counter-
+ * clockwise from +x, any real value; not necessarily wrapped). Immutable: the arrays handed to
+ * {@link #of} are owned by the trajectory afterwards and never exposed.
+ */
+public final class PlanarTrajectory implements Trajectory {
+    private final double[] t;
+    private final double[] x;
+    private final double[] y;
+    private final double[] yaw;
+
+    private PlanarTrajectory(double[] t, double[] x, double[] y, double[] yaw) {
+        this.t = t;
+        this.x = x;
+        this.y = y;
+        this.yaw = yaw;
+    }
+
+    /**
+     * Takes ownership of the arrays (the caller must not modify them afterwards).
+     *
+     * @throws IllegalArgumentException on different lengths, non-finite values or timestamps
+     *     that do not increase strictly
+     */
+    public static PlanarTrajectory of(double[] t, double[] x, double[] y, double[] yaw) {
+        TimestampCheck.requireSameLength(t.length, x, y, yaw);
+        TimestampCheck.requireStrictlyIncreasing(t);
+        TimestampCheck.requireFinite("x", x);
+        TimestampCheck.requireFinite("y", y);
+        TimestampCheck.requireFinite("yaw", yaw);
+        return new PlanarTrajectory(t, x, y, yaw);
+    }
+
+    @Override
+    public int size() {
+        return t.length;
+    }
+
+    @Override
+    public double t(int i) {
+        return t[i];
+    }
+
+    @Override
+    public double x(int i) {
+        return x[i];
+    }
+
+    @Override
+    public double y(int i) {
+        return y[i];
+    }
+
+    @Override
+    public double z(int i) {
+        return 0.0;
+    }
+
+    /** @return heading of pose {@code i} (rad) */
+    public double yaw(int i) {
+        return yaw[i];
+    }
+
+    @Override
+    public double[] timestamps() {
+        return t.clone();
+    }
+
+    /** @return copies of the columns x (m), y (m), yaw (rad) */
+    public double[] xs() {
+        return x.clone();
+    }
+
+    /** @return a copy of y (m) */
+    public double[] ys() {
+        return y.clone();
+    }
+
+    /** @return a copy of yaw (rad) */
+    public double[] yaws() {
+        return yaw.clone();
+    }
+
+    @Override
+    public SpatialTrajectory toSpatial() {
+        int n = size();
+        double[] z = new double[n];
+        double[] qw = new double[n];
+        double[] qx = new double[n];
+        double[] qy = new double[n];
+        double[] qz = new double[n];
+        for (int i = 0; i < n; i++) {
+            qw[i] = Math.cos(0.5 * yaw[i]);
+            qz[i] = Math.sin(0.5 * yaw[i]);
+        }
+        return SpatialTrajectory.ofTrusted(t, x, y, z, qw, qx, qy, qz);
+    }
+
+    @Override
+    public PlanarTrajectory toPlanar() {
+        return this;
+    }
+
+    @Override
+    public PlanarTrajectory slice(int from, int to) {
+        return new PlanarTrajectory(Arrays.copyOfRange(t, from, to), Arrays.copyOfRange(x, from, to),
+                Arrays.copyOfRange(y, from, to), Arrays.copyOfRange(yaw, from, to));
+    }
+}

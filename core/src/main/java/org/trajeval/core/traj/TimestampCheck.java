@@ -1,0 +1,35 @@
+package org.trajeval.core.traj;
+
+/** Checks shared by both trajectory types: finite values and strictly increasing timestamps. */
+final class TimestampCheck {
+    private TimestampCheck() {
+    }
+
+    static void requireSameLength(int n, double[]... columns) {
+        for (double[] c : columns) {
+            if (c.length != n) {
+                throw new IllegalArgumentException("all columns must have " + n + " values, one has " + c.length);
+            }
+        }
+    }
+
+    static void requireStrictlyIncreasing(double[] t) {
+        for (int i = 0; i < t.length; i++) {
+            if (!Double.isFinite(t[i])) {
+                throw new IllegalArgumentException("timestamp " + i + " is not finite: " + t[i]);
+            }
+            if (i > 0 && !(t[i] > t[i - 1])) {
+                throw new IllegalArgumentException("timestamps must increase strictly: t[" + i + "] = " + t[i]
+                        + " s after t[" + (i - 1) + "] = " + t[i - 1] + " s");
+            }
+        }
+    }
+
+    static void requireFinite(String name, double[] v) {
+        for (int i = 0; i < v.length; i++) {
+            if (!Double.isFinite(v[i])) {
+                throw new IllegalArgumentException(name + "[" + i + "] is not finite: " + v[i]);
+            }
+        }
+    }
+}

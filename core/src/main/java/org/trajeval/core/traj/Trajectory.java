@@ -1,0 +1,39 @@
+package org.trajeval.core.traj;
+
+/**
+ * A time-stamped sequence of poses with strictly increasing timestamps (s), stored column-wise
+ * in primitive arrays. Either planar SE(2) ({@link PlanarTrajectory}: t, x, y, yaw) or full
+ * SE(3) ({@link SpatialTrajectory}: t, position, unit quaternion).
+ */
+public sealed interface Trajectory permits PlanarTrajectory, SpatialTrajectory {
+
+    /** @return number of poses */
+    int size();
+
+    /** @return timestamp of pose {@code i} (s) */
+    double t(int i);
+
+    /** @return x of pose {@code i} (m) */
+    double x(int i);
+
+    /** @return y of pose {@code i} (m) */
+    double y(int i);
+
+    /** @return z of pose {@code i} (m); 0 for a planar trajectory */
+    double z(int i);
+
+    /** @return a copy of the timestamps (s) */
+    double[] timestamps();
+
+    /** @return this trajectory as SE(3): a planar pose becomes z = 0 and a rotation about +z by yaw */
+    SpatialTrajectory toSpatial();
+
+    /**
+     * @return this trajectory projected onto the ground plane xy: z dropped, yaw = atan2(R10, R00)
+     *     of the rotation matrix (the z angle of the static x-y-z Euler decomposition, as evo)
+     */
+    PlanarTrajectory toPlanar();
+
+    /** @return the poses with indices in [from, to) */
+    Trajectory slice(int from, int to);
+}
