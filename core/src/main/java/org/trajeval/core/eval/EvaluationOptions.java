@@ -1,0 +1,146 @@
+package org.trajeval.core.eval;
+
+import org.trajeval.core.align.AlignmentModel;
+import org.trajeval.core.assoc.AssociationMethod;
+import org.trajeval.core.assoc.OverlapPolicy;
+import org.trajeval.core.metric.DriftOptions;
+import org.trajeval.core.metric.PairSelection;
+import org.trajeval.core.metric.PairsFrom;
+import org.trajeval.core.metric.RpeUnit;
+
+/**
+ * Every setting of one evaluation of an estimate against a reference.
+ *
+ * @param convention the preset these options started from
+ * @param association how poses are paired in time
+ * @param maxDiffS max timestamp difference for nearest association (s), > 0
+ * @param tOffsetS offset added to the estimate's timestamps before association (s)
+ * @param overlap what to do with estimate poses outside the reference's span
+ * @param alignment transform fitted before ATE
+ * @param nToAlign fit the alignment on the first n associated poses; -1 for all
+ * @param projection planar projection
+ * @param rpeDelta RPE horizon, in {@code rpeUnit}, > 0
+ * @param rpeUnit unit of the RPE horizon
+ * @param pairSelection consecutive pairs or all pairs
+ * @param pairsFrom trajectory the RPE pairs are chosen on
+ * @param drift length-normalised drift settings, or {@code null} for no drift
+ */
+public record EvaluationOptions(Convention convention, AssociationMethod association, double maxDiffS,
+        double tOffsetS, OverlapPolicy overlap, AlignmentModel alignment, int nToAlign,
+        PlanarProjection projection, double rpeDelta, RpeUnit rpeUnit, PairSelection pairSelection,
+        PairsFrom pairsFrom, DriftOptions drift) {
+
+    /** @throws IllegalArgumentException on a missing or out-of-range setting */
+    public EvaluationOptions {
+        requireNonNull(convention, "convention");
+        requireNonNull(association, "association");
+        requireNonNull(overlap, "overlap");
+        requireNonNull(alignment, "alignment");
+        requireNonNull(projection, "projection");
+        requireNonNull(rpeUnit, "rpeUnit");
+        requireNonNull(pairSelection, "pairSelection");
+        requireNonNull(pairsFrom, "pairsFrom");
+        if (!(maxDiffS > 0.0) || !Double.isFinite(maxDiffS)) {
+            throw new IllegalArgumentException("max-diff must be a positive number of seconds, got " + maxDiffS);
+        }
+        if (!Double.isFinite(tOffsetS)) {
+            throw new IllegalArgumentException("t-offset must be a finite number of seconds, got " + tOffsetS);
+        }
+        if (!(rpeDelta > 0.0) || !Double.isFinite(rpeDelta)) {
+            throw new IllegalArgumentException("rpe-delta must be positive, got " + rpeDelta);
+        }
+        if (rpeUnit == RpeUnit.FRAMES && rpeDelta != Math.rint(rpeDelta)) {
+            throw new IllegalArgumentException("rpe-delta in frames must be a whole number, got " + rpeDelta);
+        }
+        if (nToAlign == 0 || nToAlign < -1) {
+            throw new IllegalArgumentException("n-to-align must be -1 (all) or positive, got " + nToAlign);
+        }
+    }
+
+    private static void requireNonNull(Object o, String name) {
+        if (o == null) {
+            throw new IllegalArgumentException(name + " must be set");
+        }
+    }
+
+    /** @return the preset of a convention (see {@link Convention}) */
+    public static EvaluationOptions preset(Convention convention) {
+        return switch (convention) {
+            case LESSON -> new EvaluationOptions(convention, AssociationMethod.INTERPOLATE, 0.01, 0.0,
+                    OverlapPolicy.CROP, AlignmentModel.SE3, -1, PlanarProjection.NONE, 1.0, RpeUnit.SECONDS,
+                    PairSelection.CONSECUTIVE, PairsFrom.ESTIMATE, null);
+            case EVO -> new EvaluationOptions(convention, AssociationMethod.NEAREST, 0.01, 0.0,
+                    OverlapPolicy.CROP, AlignmentModel.NONE, -1, PlanarProjection.NONE, 1.0, RpeUnit.FRAMES,
+                    PairSelection.CONSECUTIVE, PairsFrom.ESTIMATE, null);
+            case KITTI -> new EvaluationOptions(convention, AssociationMethod.NEAREST, 0.01, 0.0,
+                    OverlapPolicy.CROP, AlignmentModel.NONE, -1, PlanarProjection.NONE, 1.0, RpeUnit.FRAMES,
+                    PairSelection.CONSECUTIVE, PairsFrom.ESTIMATE, DriftOptions.KITTI);
+        };
+    }
+
+    /** @return a copy with another association method */
+    public EvaluationOptions withAssociation(AssociationMethod v) {
+        return new EvaluationOptions(convention, v, maxDiffS, tOffsetS, overlap, alignment, nToAlign, projection,
+                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift);
+    }
+
+    /** @return a copy with another max difference (s) */
+    public EvaluationOptions withMaxDiffS(double v) {
+        return new EvaluationOptions(convention, association, v, tOffsetS, overlap, alignment, nToAlign, projection,
+                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift);
+    }
+
+    /** @return a copy with another time offset (s) */
+    public EvaluationOptions withTOffsetS(double v) {
+        return new EvaluationOptions(convention, association, maxDiffS, v, overlap, alignment, nToAlign, projection,
+                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift);
+    }
+
+    /** @return a copy with another overlap policy */
+    public EvaluationOptions withOverlap(OverlapPolicy v) {
+        return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, v, alignment, nToAlign, projection,
+                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift);
+    }
+
+    /** @return a copy with another alignment model */
+    public EvaluationOptions withAlignment(AlignmentModel v) {
+        return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, v, nToAlign, projection,
+                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift);
+    }
+
+    /** @return a copy fitting the alignment on the first n poses (-1: all) */
+    public EvaluationOptions withNToAlign(int v) {
+        return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, alignment, v, projection,
+                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift);
+    }
+
+    /** @return a copy with another planar projection */
+    public EvaluationOptions withProjection(PlanarProjection v) {
+        return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, alignment, nToAlign, v,
+                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift);
+    }
+
+    /** @return a copy with another RPE horizon */
+    public EvaluationOptions withRpe(double delta, RpeUnit unit) {
+        return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, alignment, nToAlign,
+                projection, delta, unit, pairSelection, pairsFrom, drift);
+    }
+
+    /** @return a copy with another pair selection */
+    public EvaluationOptions withPairSelection(PairSelection v) {
+        return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, alignment, nToAlign,
+                projection, rpeDelta, rpeUnit, v, pairsFrom, drift);
+    }
+
+    /** @return a copy choosing RPE pairs on another trajectory */
+    public EvaluationOptions withPairsFrom(PairsFrom v) {
+        return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, alignment, nToAlign,
+                projection, rpeDelta, rpeUnit, pairSelection, v, drift);
+    }
+
+    /** @return a copy with other drift settings ({@code null}: no drift) */
+    public EvaluationOptions withDrift(DriftOptions v) {
+        return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, alignment, nToAlign,
+                projection, rpeDelta, rpeUnit, pairSelection, pairsFrom, v);
+    }
+}

@@ -1,0 +1,11 @@
+package org.trajeval.core.eval;
+
+/** Whether and when SE(3) poses are projected onto the ground plane. */
+public enum PlanarProjection {
+    /** Keep full SE(3). */
+    NONE,
+    /** Project onto xy before alignment (the lesson's SE(2) setting; {@code --planar}). */
+    XY_BEFORE_ALIGNMENT,
+    /** Project onto xy after a 3D alignment (evo's {@code --project_to_plane xy}). */
+    XY_AFTER_ALIGNMENT
+}

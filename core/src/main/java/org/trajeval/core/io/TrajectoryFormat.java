@@ -1,0 +1,20 @@
+package org.trajeval.core.io;
+
+import java.util.Locale;
+
+/** File formats trajeval reads. */
+public enum TrajectoryFormat {
+    /** CSV with a header row; planar t,x,y,yaw by default (column names, delimiter, time unit configurable). */
+    CSV,
+    /** TUM RGB-D: {@code t tx ty tz qx qy qz qw} per line, space separated, seconds, w last; {@code #} comments. */
+    TUM,
+    /** KITTI odometry: 12 numbers per line (3x4 pose matrix, row-major), no stamps; optional times file. */
+    KITTI,
+    /** EuRoC ground-truth CSV: {@code t[ns], p_x, p_y, p_z, q_w, q_x, q_y, q_z, ...}, w first. */
+    EUROC;
+
+    /** @return the lower-case name used on the command line and in reports */
+    public String id() {
+        return name().toLowerCase(Locale.ROOT);
+    }
+}

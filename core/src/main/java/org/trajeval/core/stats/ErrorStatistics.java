@@ -1,0 +1,58 @@
+package org.trajeval.core.stats;
+
+import java.util.Arrays;
+
+/**
+ * Summary of a set of non-negative error values e_1..e_n, in the unit of the errors (m or rad).
+ * rmse = sqrt(sse / n); sse = sum e_i^2; std is the population standard deviation
+ * sqrt(sum (e_i - mean)^2 / n), as evo reports it; median is the middle value, or the mean of
+ * the two middle values when n is even.
+ */
+public record ErrorStatistics(double rmse, double mean, double median, double std, double min, double max,
+        double sse, long n) {
+
+    /** @throws IllegalArgumentException when n is negative */
+    public ErrorStatistics {
+        if (n < 0) {
+            throw new IllegalArgumentException("n must be >= 0, got " + n);
+        }
+    }
+
+    /**
+     * Computes the statistics of {@code values[0..count)}; the array is not modified.
+     * The empty set gives NaN for every statistic and n = 0.
+     */
+    public static ErrorStatistics of(double[] values, int count) {
+        if (count == 0) {
+            double nan = Double.NaN;
+            return new ErrorStatistics(nan, nan, nan, nan, nan, nan, nan, 0);
+        }
+        double sum = 0.0;
+        double sse = 0.0;
+        double min = Double.POSITIVE_INFINITY;
+        double max = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < count; i++) {
+            double v = values[i];
+            sum += v;
+            sse += v * v;
+            min = Math.min(min, v);
+            max = Math.max(max, v);
+        }
+        double mean = sum / count;
+        double sq = 0.0;
+        for (int i = 0; i < count; i++) {
+            double d = values[i] - mean;
+            sq += d * d;
+        }
+        double[] sorted = Arrays.copyOf(values, count);
+        Arrays.sort(sorted);
+        double median = (count % 2 == 1) ? sorted[count / 2]
+                : 0.5 * (sorted[count / 2 - 1] + sorted[count / 2]);
+        return new ErrorStatistics(Math.sqrt(sse / count), mean, median, Math.sqrt(sq / count), min, max, sse, count);
+    }
+
+    /** Computes the statistics of all of {@code values}. */
+    public static ErrorStatistics of(double[] values) {
+        return of(values, values.length);
+    }
+}
