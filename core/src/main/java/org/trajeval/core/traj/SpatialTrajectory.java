@@ -118,6 +118,35 @@ public final class SpatialTrajectory implements Trajectory {
         }
     }
 
+    /** @return quaternion scalar part w of pose i (as read, or derived from the matrix) */
+    public double qw(int i) {
+        return quaternionPart(i, 0);
+    }
+
+    /** @return quaternion x part of pose i */
+    public double qx(int i) {
+        return quaternionPart(i, 1);
+    }
+
+    /** @return quaternion y part of pose i */
+    public double qy(int i) {
+        return quaternionPart(i, 2);
+    }
+
+    /** @return quaternion z part of pose i */
+    public double qz(int i) {
+        return quaternionPart(i, 3);
+    }
+
+    private double quaternionPart(int i, int k) {
+        if (q != null) {
+            return q[4 * i + k];
+        }
+        double[] out = new double[4];
+        quaternion(i, out);
+        return out[k];
+    }
+
     @Override
     public double[] timestamps() {
         return t.clone();
