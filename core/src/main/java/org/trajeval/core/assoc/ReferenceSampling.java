@@ -6,12 +6,12 @@ import org.trajeval.core.traj.Trajectory;
  * Sampling quality of a reference trajectory, for the lesson's Proposition 2 (interpolation
  * error <= A_max h^2 / 8).
  */
-final class ReferenceSampling {
+public final class ReferenceSampling {
     private ReferenceSampling() {
     }
 
     /** @return the largest gap t(k+1) - t(k) for from <= k < to (s); 0 for a single pose */
-    static double maxGap(Trajectory ref, int from, int to) {
+    public static double maxGap(Trajectory ref, int from, int to) {
         double h = 0.0;
         for (int k = from; k < to; k++) {
             h = Math.max(h, ref.t(k + 1) - ref.t(k));
@@ -25,7 +25,7 @@ final class ReferenceSampling {
      * (m/s^2). With noisy ground truth this overestimates A_max (noise / h^2), which keeps the
      * bound conservative.
      */
-    static double maxAcceleration(Trajectory ref, int from, int to) {
+    public static double maxAcceleration(Trajectory ref, int from, int to) {
         int lo = Math.max(from, 1);
         int hi = Math.min(to, ref.size() - 2);
         double aMax = 0.0;
