@@ -121,13 +121,19 @@ public final class EvalCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "FILE", description = "Write the JSON report to FILE (atomically).")
     Path out;
 
+    @Option(names = "--threads", paramLabel = "N", description = "Threads for reading the two files "
+            + "(default: ${DEFAULT-VALUE}; 1 reads them one after the other).", defaultValue = "2")
+    int threads;
+
     @Option(names = "--verbose", description = "Print stack traces of errors.")
     boolean verbose;
 
     @Override
     public Integer call() {
-        LoadedTrajectory ref = input.read(reference, true);
-        LoadedTrajectory est = input.read(estimate, false);
+        MemoryBudget.check(reference, estimate, Runtime.getRuntime().maxMemory());
+        LoadedTrajectory[] pair = ParallelRead.both(input, reference, estimate, threads);
+        LoadedTrajectory ref = pair[0];
+        LoadedTrajectory est = pair[1];
         EvaluationOptions options = options(ref, est);
         EvaluationReport report = Evaluator.evaluate(ref, est, options);
         String jsonText = ReportJson.toJson(report);
