@@ -104,12 +104,12 @@ public final class EvalCommand implements Callable<Integer> {
             + "chosen on (default: estimate, as evo).", converter = Enums.PairsFromConverter.class)
     PairsFrom pairsFrom;
 
-    @Option(names = "--drift", description = "Compute KITTI-style length-normalised drift (%, deg/m).")
+    @Option(names = "--drift", description = "Compute KITTI-style length-normalised drift (%%, deg/m).")
     boolean drift;
 
-    @Option(names = "--drift-lengths", paramLabel = "M[,M...]", split = ",",
+    @Option(names = "--drift-lengths", paramLabel = "M,M,...",
             description = "Drift segment lengths (m; default 100,200,...,800).")
-    double[] driftLengths;
+    String driftLengthsText;
 
     @Option(names = "--drift-step", paramLabel = "FRAMES", description = "Frames between drift segment starts "
             + "(default 10).")
@@ -197,12 +197,27 @@ public final class EvalCommand implements Callable<Integer> {
         if (pairsFrom != null) {
             o = o.withPairsFrom(pairsFrom);
         }
+        double[] driftLengths = driftLengthsText == null ? null : numbers("--drift-lengths", driftLengthsText);
         if (drift || driftLengths != null || driftStep != null) {
             DriftOptions base = DriftOptions.KITTI;
             o = o.withDrift(new DriftOptions(driftLengths != null ? driftLengths : base.segmentLengthsM(),
                     driftStep != null ? driftStep : base.stepFrames()));
         }
         return o;
+    }
+
+    private static double[] numbers(String option, String text) {
+        String[] parts = text.split(",");
+        double[] v = new double[parts.length];
+        for (int i = 0; i < parts.length; i++) {
+            try {
+                v[i] = Double.parseDouble(parts[i].trim());
+            } catch (NumberFormatException e) {
+                throw new IllegalArgumentException(option + " expects numbers separated by commas (m), found \""
+                        + parts[i].trim() + "\"");
+            }
+        }
+        return v;
     }
 
     /** @return the format names accepted by --format */

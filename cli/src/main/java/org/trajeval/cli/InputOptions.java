@@ -31,9 +31,9 @@ public final class InputOptions {
             converter = Enums.TimeUnitConverter.class, description = "Unit of CSV timestamps (default: s).")
     TimeUnit timeUnit;
 
-    @Option(names = "--columns", paramLabel = "T,X,Y,YAW", split = ",", description = "CSV column names of "
+    @Option(names = "--columns", paramLabel = "T,X,Y,YAW", description = "CSV column names of "
             + "time (s), x (m), y (m) and yaw (rad) (default: t,x,y,yaw).")
-    String[] columns;
+    String columnsText;
 
     @Option(names = "--delimiter", paramLabel = "CHAR", description = "CSV field delimiter (default: ',').")
     Character delimiter;
@@ -64,6 +64,7 @@ public final class InputOptions {
                 : (estFormat != null ? estFormat : format);
         o = o.withFormat(f);
         CsvLayout base = CsvLayout.DEFAULT;
+        String[] columns = columnsText == null ? null : columnsText.split(",", -1);
         if (columns != null && columns.length != 4) {
             throw new IllegalArgumentException("--columns needs 4 names (time, x, y, yaw), found " + columns.length);
         }
