@@ -324,9 +324,10 @@ final class NumericRows {
         return text(fieldStart[i], fieldEnd[i]);
     }
 
-    /** @return the selected field {@code k} of the current line as text (for messages) */
+    /** @return the selected field {@code k} of the current line as text (for messages; splits the line again) */
     String selectedText(int k) {
-        return field(select[k]);
+        split(lines.buffer(), lines.start(), lines.end());
+        return select[k] < count ? field(select[k]) : "";
     }
 
     private String text(int s, int e) {
