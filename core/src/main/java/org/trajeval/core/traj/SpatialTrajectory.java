@@ -11,6 +11,9 @@ import java.util.Arrays;
  * <p>Immutable: the arrays handed to {@link #of} are owned by the trajectory afterwards.
  */
 public final class SpatialTrajectory implements Trajectory {
+    /** Rounding error of the norm of a quaternion normalised in double precision: 4 ulp(1). */
+    private static final double UNIT_NORM_ROUNDING = 4 * Math.ulp(1.0);
+
     private final double[] t;
     private final double[] x;
     private final double[] y;
@@ -52,7 +55,9 @@ public final class SpatialTrajectory implements Trajectory {
             if (!(norm > 0.0)) {
                 throw new IllegalArgumentException("quaternion " + i + " is zero");
             }
-            if (norm != 1.0) {
+            // a quaternion already normalised (|norm - 1| within rounding) is kept bit for bit, so
+            // that normalising is idempotent and written trajectories read back exactly
+            if (Math.abs(norm - 1.0) > UNIT_NORM_ROUNDING) {
                 qw[i] /= norm;
                 qx[i] /= norm;
                 qy[i] /= norm;
