@@ -131,6 +131,9 @@ public final class EvalCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         MemoryBudget.check(reference, estimate, Runtime.getRuntime().maxMemory());
+        if (convention == Convention.EVO) {
+            input.defaultDuplicates = org.trajeval.core.io.DuplicateTimestamps.KEEP;
+        }
         LoadedTrajectory[] pair = ParallelRead.both(input, reference, estimate, threads);
         LoadedTrajectory ref = pair[0];
         LoadedTrajectory est = pair[1];

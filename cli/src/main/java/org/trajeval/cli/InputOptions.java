@@ -2,6 +2,7 @@ package org.trajeval.cli;
 
 import java.nio.file.Path;
 import org.trajeval.core.io.CsvLayout;
+import org.trajeval.core.io.DuplicateTimestamps;
 import org.trajeval.core.io.LoadedTrajectory;
 import org.trajeval.core.io.ReadOptions;
 import org.trajeval.core.io.TimeUnit;
@@ -42,6 +43,14 @@ public final class InputOptions {
             + "(duplicate timestamps are still refused).")
     boolean sort;
 
+    @Option(names = "--duplicates", paramLabel = "refuse|keep", converter = Enums.DuplicatesConverter.class,
+            description = "Poses with equal timestamps: refuse (default; names both lines) or keep them in file "
+                    + "order as evo does (default with --convention evo).")
+    DuplicateTimestamps duplicates;
+
+    /** Policy used when --duplicates is not given (the convention's). */
+    DuplicateTimestamps defaultDuplicates = DuplicateTimestamps.REFUSE;
+
     @Option(names = "--ref-times", paramLabel = "FILE", description = "KITTI times file of the reference "
             + "(one time in s per line).")
     Path refTimes;
@@ -76,6 +85,7 @@ public final class InputOptions {
         if (sort) {
             o = o.withOrder(TimestampOrder.SORT);
         }
+        o = o.withDuplicates(duplicates != null ? duplicates : defaultDuplicates);
         Path times = reference ? refTimes : estTimes;
         if (times != null) {
             o = o.withKittiTimes(times);

@@ -32,6 +32,9 @@ public final class ReferenceSampling {
         for (int k = lo; k <= hi; k++) {
             double h0 = ref.t(k) - ref.t(k - 1);
             double h1 = ref.t(k + 1) - ref.t(k);
+            if (!(h0 > 0.0) || !(h1 > 0.0)) {
+                continue; // a duplicate stamp (kept on request) says nothing about acceleration
+            }
             double w = 2.0 / (h0 + h1);
             double ax = w * ((ref.x(k + 1) - ref.x(k)) / h1 - (ref.x(k) - ref.x(k - 1)) / h0);
             double ay = w * ((ref.y(k + 1) - ref.y(k)) / h1 - (ref.y(k) - ref.y(k - 1)) / h0);

@@ -28,6 +28,7 @@ import org.trajeval.core.eval.Evaluation;
 import org.trajeval.core.eval.EvaluationOptions;
 import org.trajeval.core.eval.Evaluator;
 import org.trajeval.core.eval.PlanarProjection;
+import org.trajeval.core.io.DuplicateTimestamps;
 import org.trajeval.core.io.LoadedTrajectory;
 import org.trajeval.core.io.ReadOptions;
 import org.trajeval.core.io.TrajectoryFormat;
@@ -76,7 +77,9 @@ class EvoParityTest {
     }
 
     static synchronized LoadedTrajectory load(Path dir, String file, TrajectoryFormat format) {
-        return CACHE.computeIfAbsent(file + "/" + format, k -> TempReader.read(dir.resolve(file), format));
+        return CACHE.computeIfAbsent(file + "/" + format, k -> TrajectoryReader.read(dir.resolve(file),
+                // evo keeps duplicate stamps (fr2_desk_groundtruth.txt, V102.txt have some): so do we here
+                ReadOptions.defaults().withFormat(format).withDuplicates(DuplicateTimestamps.KEEP)));
     }
 
     /** The evo options of a record as trajeval options (the mapping the README's table states). */
