@@ -116,7 +116,8 @@ final class PoseBuffer {
     private InputException duplicate(long firstLine, long line, double t, String found) {
         return new InputException(source, line, timeColumn, InputProblem.DUPLICATE_TIMESTAMP,
                 "column '" + timeColumn + "' repeats the timestamp of line " + firstLine + " (" + t
-                        + " s): timestamps must be unique (--sort does not remove duplicates)",
+                        + " s): timestamps must be unique (--sort does not remove duplicates; --duplicates keep keeps both poses, as evo"
+                        + " does)",
                 found);
     }
 

@@ -84,7 +84,8 @@ class SortingTest {
         assertEquals(InputProblem.DUPLICATE_TIMESTAMP, e.problem());
         assertEquals(5, e.line());
         assertEquals(file + ":5: column 't' repeats the timestamp of line 3 (0.2 s): timestamps must be unique"
-                + " (--sort does not remove duplicates), found \"0.2\"", e.getMessage());
+                + " (--sort does not remove duplicates; --duplicates keep keeps both poses, as evo does), found \"0.2\"",
+                e.getMessage());
     }
 
     private static Path write(Path p, String header, List<String> rows) throws IOException {
