@@ -47,6 +47,6 @@ final class FileProblems {
 
     static InputException empty(String source, String what) {
         return new InputException(source, 0, null, InputProblem.EMPTY,
-                "the file must hold at least one pose, " + what, null);
+                "the file must hold at least one pose; " + what, null);
     }
 }

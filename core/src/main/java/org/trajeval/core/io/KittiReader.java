@@ -31,6 +31,7 @@ final class KittiReader {
             rows.select(new int[] {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}, NAMES, UNITS);
             rows.requireFields(12, "r11 r12 r13 tx r21 r22 r23 ty r31 r32 r33 tz, separated by spaces");
             PoseBuffer poses = new PoseBuffer(source, "index", 8, TimestampOrder.REFUSE_UNSORTED, options.maxPoses());
+            poses.sizeFrom(lines);
             double[] in = new double[12];
             double[] r = new double[9];
             double[] q = new double[4];
@@ -61,7 +62,7 @@ final class KittiReader {
                 row[7] = q[3];
                 poses.add(row, rows.lineNumber());
             }
-            c = poses.finish("only comment or blank lines");
+            c = poses.finish("it holds only comment or blank lines");
             sha = lines.finishSha256();
         }
         if (options.kittiTimes() == null) {
@@ -110,7 +111,7 @@ final class KittiReader {
             if (k < n) {
                 throw countMismatch(source, 0, poseSource, n, "it has only " + k);
             }
-            return poses.finish("only comment or blank lines");
+            return poses.finish("it holds only comment or blank lines");
         }
     }
 

@@ -29,6 +29,7 @@ final class PoseBuffer {
     private int n;
     private double lastT = Double.NaN;
     private long lastLine;
+    private ByteLines progress;
 
     /**
      * @param source file name for messages
@@ -72,11 +73,25 @@ final class PoseBuffer {
         return ACCEPTED;
     }
 
+    /**
+     * Lets the buffer size itself from the bytes read so far: at the first growth it extrapolates
+     * the pose count from the bytes per pose, so a big file needs one allocation, not twenty.
+     */
+    void sizeFrom(ByteLines lines) {
+        this.progress = lines;
+    }
+
     private void grow(long line) {
         if (n >= maxPoses) {
             throw FileProblems.tooManyPoses(source, line, maxPoses);
         }
-        int capacity = (int) Math.min((long) n * 2, maxPoses);
+        long wanted = (long) n * 2;
+        if (progress != null && progress.expectedBytes() > 0 && progress.consumedBytes() > 0) {
+            double posesPerByte = (double) n / progress.consumedBytes();
+            long estimate = (long) (posesPerByte * progress.expectedBytes() * 1.02) + 64;
+            wanted = Math.max(estimate, n + (n >> 3) + 64);
+        }
+        int capacity = (int) Math.min(wanted, maxPoses);
         for (int c = 0; c < columns.length; c++) {
             columns[c] = Arrays.copyOf(columns[c], capacity);
         }

@@ -66,7 +66,7 @@ final class QuotedCsvReader {
         long[] lastEnd = {0};
         CSVRecord first = nextRecord(records, parser, source, lastEnd);
         if (first == null) {
-            throw FileProblems.empty(source, "and it has no header line either");
+            throw FileProblems.empty(source, "it has not even a header line");
         }
         List<String> header = new ArrayList<>(first.toList());
         if (!header.isEmpty() && header.get(0).startsWith("\uFEFF")) {
@@ -101,7 +101,7 @@ final class QuotedCsvReader {
                 throw poses.orderProblem(code, row[0], line, stampText);
             }
         }
-        double[][] c = poses.finish("only a header line");
+        double[][] c = poses.finish("it holds only a header line");
         return PlanarTrajectory.of(c[0], c[1], c[2], c[3]);
     }
 
