@@ -50,7 +50,8 @@ final class CsvTrajectoryReader {
             CsvColumns columns = CsvColumns.locate(header, layout, source, rows.lineNumber());
             rows.select(columns.index(), columns.names(), columns.units());
             rows.requireFields(columns.fieldCount(), CsvColumns.describe(header, layout.delimiter()));
-            PoseBuffer poses = new PoseBuffer(source, layout.timeColumn(), 4, options.order(), options.maxPoses());
+            PoseBuffer poses = new PoseBuffer(source, layout.timeColumn(), 4, options.order(),
+                    options.duplicates(), options.maxPoses());
             poses.sizeFrom(lines);
             TimeUnit unit = layout.timeUnit();
             double[] row = new double[4];

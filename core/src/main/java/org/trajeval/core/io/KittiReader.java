@@ -12,12 +12,15 @@ import org.trajeval.core.traj.SpatialTrajectory;
  * i gets t = i s and {@link LoadedTrajectory#indexTimestamps()} is true, unless a times file
  * (one time in s per line, as many lines as poses) gives real stamps. R must be a rotation
  * within the tolerance (max |R^T R - I| and |det R - 1|; the KITTI ground truth, written with 7
- * digits, is orthonormal to about 1e-6); it becomes a unit quaternion by Shepperd's method.
+ * digits, is orthonormal to about 1e-6) and is kept exactly as read, as evo keeps it
+ * ({@link SpatialTrajectory#ofMatrices}).
  */
 final class KittiReader {
     private static final String[] NAMES = {"r11", "r12", "r13", "tx", "r21", "r22", "r23", "ty", "r31", "r32", "r33",
         "tz"};
     private static final String[] UNITS = {"", "", "", "(m)", "", "", "", "(m)", "", "", "", "(m)"};
+    /** Pose-buffer columns: t, x, y, z, then R row-major (9). */
+    private static final int COLUMNS = 13;
     private static final String TIME_UNIT_REMEDY = "convert the times file to seconds (KITTI times are seconds)";
 
     private KittiReader() {
@@ -30,12 +33,12 @@ final class KittiReader {
             NumericRows rows = new NumericRows(lines, source, NumericRows.WHITESPACE, false);
             rows.select(new int[] {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}, NAMES, UNITS);
             rows.requireFields(12, "r11 r12 r13 tx r21 r22 r23 ty r31 r32 r33 tz, separated by spaces");
-            PoseBuffer poses = new PoseBuffer(source, "index", 8, TimestampOrder.REFUSE_UNSORTED, options.maxPoses());
+            PoseBuffer poses = new PoseBuffer(source, "index", COLUMNS, TimestampOrder.REFUSE_UNSORTED,
+                    options.maxPoses());
             poses.sizeFrom(lines);
             double[] in = new double[12];
             double[] r = new double[9];
-            double[] q = new double[4];
-            double[] row = new double[8];
+            double[] row = new double[COLUMNS];
             double tolerance = options.quaternionTolerance();
             while (rows.next(in)) {
                 for (int i = 0; i < 3; i++) {
@@ -51,28 +54,30 @@ final class KittiReader {
                                     + "(max |R^T R - I| = %.3g, det R = %.6g)", tolerance, orthoError, det),
                             rows.lineText());
                 }
-                RotationMatrix.toQuaternion(r, q);
                 row[0] = poses.size();
                 row[1] = in[3];
                 row[2] = in[7];
                 row[3] = in[11];
-                row[4] = q[0];
-                row[5] = q[1];
-                row[6] = q[2];
-                row[7] = q[3];
+                System.arraycopy(r, 0, row, 4, 9);
                 poses.add(row, rows.lineNumber());
             }
             c = poses.finish("it holds only comment or blank lines");
             sha = lines.finishSha256();
         }
-        if (options.kittiTimes() == null) {
-            return new LoadedTrajectory(source, TrajectoryFormat.KITTI, reason,
-                    SpatialTrajectory.of(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]), sha, true);
+        boolean indexStamps = options.kittiTimes() == null;
+        if (!indexStamps) {
+            c = withTimes(c, source, options);
+            reason = reason + "; times from " + options.kittiTimes();
         }
-        double[][] timed = withTimes(c, source, options);
-        return new LoadedTrajectory(source, TrajectoryFormat.KITTI, reason + "; times from " + options.kittiTimes(),
-                SpatialTrajectory.of(timed[0], timed[1], timed[2], timed[3], timed[4], timed[5], timed[6], timed[7]),
-                sha, false);
+        int n = c[0].length;
+        double[] matrices = new double[9 * n];
+        for (int i = 0; i < n; i++) {
+            for (int k = 0; k < 9; k++) {
+                matrices[9 * i + k] = c[4 + k][i];
+            }
+        }
+        return new LoadedTrajectory(source, TrajectoryFormat.KITTI, reason,
+                SpatialTrajectory.ofMatrices(c[0], c[1], c[2], c[3], matrices), sha, indexStamps);
     }
 
     /** Replaces the index stamps by the times file's, one line per pose, with the order policy. */
@@ -85,9 +90,10 @@ final class KittiReader {
             NumericRows rows = new NumericRows(lines, source, NumericRows.WHITESPACE, false);
             rows.select(new int[] {0}, new String[] {"time"}, new String[] {"(s)"});
             rows.requireFields(1, "one time in s per line");
-            PoseBuffer poses = new PoseBuffer(source, "time", 8, options.order(), options.maxPoses());
+            PoseBuffer poses = new PoseBuffer(source, "time", COLUMNS, options.order(), options.duplicates(),
+                    options.maxPoses());
             double[] in = new double[1];
-            double[] row = new double[8];
+            double[] row = new double[COLUMNS];
             int k = 0;
             while (rows.next(in)) {
                 long line = rows.lineNumber();
@@ -99,7 +105,7 @@ final class KittiReader {
                             rows.selectedText(0));
                 }
                 row[0] = in[0];
-                for (int col = 1; col < 8; col++) {
+                for (int col = 1; col < COLUMNS; col++) {
                     row[col] = c[col][k];
                 }
                 int code = poses.add(row, line);

@@ -8,7 +8,8 @@ import org.trajeval.core.InputProblem;
  * Growing primitive columns of poses (column 0 is the timestamp in s) with the timestamp-order
  * policy: with {@link TimestampOrder#REFUSE_UNSORTED} each timestamp is checked against the one
  * before as it is added; with {@link TimestampOrder#SORT} the poses are sorted stably by time at
- * the end and any two equal timestamps are refused, naming both lines.
+ * the end and any two equal timestamps are refused, naming both lines (or kept in file order
+ * with {@link DuplicateTimestamps#KEEP}).
  */
 final class PoseBuffer {
     /** {@link #add} result: the pose was taken. */
@@ -30,6 +31,7 @@ final class PoseBuffer {
     private double lastT = Double.NaN;
     private long lastLine;
     private ByteLines progress;
+    private final boolean keepDuplicates;
 
     /**
      * @param source file name for messages
@@ -37,6 +39,13 @@ final class PoseBuffer {
      * @param columnCount number of columns, the time included
      */
     PoseBuffer(String source, String timeColumn, int columnCount, TimestampOrder order, long maxPoses) {
+        this(source, timeColumn, columnCount, order, DuplicateTimestamps.REFUSE, maxPoses);
+    }
+
+    /** As above, with a duplicate-timestamp policy. */
+    PoseBuffer(String source, String timeColumn, int columnCount, TimestampOrder order, DuplicateTimestamps duplicates,
+            long maxPoses) {
+        this.keepDuplicates = duplicates == DuplicateTimestamps.KEEP;
         this.source = source;
         this.timeColumn = timeColumn;
         this.order = order;
@@ -54,7 +63,7 @@ final class PoseBuffer {
      */
     int add(double[] row, long line) {
         double t = row[0];
-        if (lines == null && n > 0 && !(t > lastT)) {
+        if (lines == null && n > 0 && !(t > lastT) && !(keepDuplicates && t == lastT)) {
             return t < lastT ? DECREASING : DUPLICATE;
         }
         if (n == columns[0].length || n >= maxPoses) {
@@ -143,7 +152,7 @@ final class PoseBuffer {
             throw FileProblems.empty(source, emptyWhat);
         }
         double[][] out = new double[columns.length][];
-        if (lines != null && !strictlyIncreasing(columns[0], n)) {
+        if (lines != null && !increasing(columns[0], n, keepDuplicates)) {
             int[] perm = stableOrder(columns[0], n);
             for (int c = 0; c < columns.length; c++) {
                 double[] src = columns[c];
@@ -154,7 +163,7 @@ final class PoseBuffer {
                 out[c] = dst;
             }
             double[] t = out[0];
-            for (int i = 1; i < n; i++) {
+            for (int i = 1; i < n && !keepDuplicates; i++) {
                 if (t[i] == t[i - 1]) {
                     long a = lines[perm[i - 1]];
                     long b = lines[perm[i]];
@@ -169,9 +178,9 @@ final class PoseBuffer {
         return out;
     }
 
-    private static boolean strictlyIncreasing(double[] t, int n) {
+    private static boolean increasing(double[] t, int n, boolean equalAllowed) {
         for (int i = 1; i < n; i++) {
-            if (!(t[i] > t[i - 1])) {
+            if (!(t[i] > t[i - 1]) && !(equalAllowed && t[i] == t[i - 1])) {
                 return false;
             }
         }

@@ -74,7 +74,8 @@ final class QuotedCsvReader {
         }
         long headerLine = parser.getCurrentLineNumber();
         CsvColumns columns = CsvColumns.locate(header, layout, source, headerLine);
-        PoseBuffer poses = new PoseBuffer(source, layout.timeColumn(), 4, options.order(), options.maxPoses());
+        PoseBuffer poses = new PoseBuffer(source, layout.timeColumn(), 4, options.order(),
+                    options.duplicates(), options.maxPoses());
         TimeUnit unit = layout.timeUnit();
         double[] row = new double[4];
         CSVRecord record;
