@@ -66,6 +66,7 @@ final class SuiteCharts {
         XYChart c = new XYChartBuilder().width(560).height(420).title("Position error, " + p.sequence())
                 .xAxisTitle("time (s)").yAxisTitle("|p_est - p_ref| (m)").build();
         style(c);
+        c.getStyler().setXAxisDecimalPattern("0.#");
         int k = 0;
         boolean any = false;
         for (SequencePlot.Trace t : p.estimates()) {
