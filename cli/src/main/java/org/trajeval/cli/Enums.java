@@ -5,6 +5,7 @@ import org.trajeval.core.align.AlignmentModel;
 import org.trajeval.core.assoc.AssociationMethod;
 import org.trajeval.core.assoc.OverlapPolicy;
 import org.trajeval.core.eval.Convention;
+import org.trajeval.core.io.DuplicateTimestamps;
 import org.trajeval.core.io.TimeUnit;
 import org.trajeval.core.io.TrajectoryFormat;
 import org.trajeval.core.metric.PairsFrom;
@@ -88,6 +89,14 @@ final class Enums {
                 return null;
             }
             return parse(TrajectoryFormat.class, v, "auto|csv|tum|kitti|euroc");
+        }
+    }
+
+    /** refuse|keep. */
+    static final class DuplicatesConverter implements ITypeConverter<DuplicateTimestamps> {
+        @Override
+        public DuplicateTimestamps convert(String v) {
+            return parse(DuplicateTimestamps.class, v, "refuse|keep");
         }
     }
 

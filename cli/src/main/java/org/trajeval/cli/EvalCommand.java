@@ -104,12 +104,12 @@ public final class EvalCommand implements Callable<Integer> {
             + "chosen on (default: estimate, as evo).", converter = Enums.PairsFromConverter.class)
     PairsFrom pairsFrom;
 
-    @Option(names = "--drift", description = "Compute KITTI-style length-normalised drift (%, deg/m).")
+    @Option(names = "--drift", description = "Compute KITTI-style length-normalised drift (%%, deg/m).")
     boolean drift;
 
-    @Option(names = "--drift-lengths", paramLabel = "M[,M...]", split = ",",
+    @Option(names = "--drift-lengths", paramLabel = "M,M,...",
             description = "Drift segment lengths (m; default 100,200,...,800).")
-    double[] driftLengths;
+    String driftLengthsText;
 
     @Option(names = "--drift-step", paramLabel = "FRAMES", description = "Frames between drift segment starts "
             + "(default 10).")
@@ -121,13 +121,22 @@ public final class EvalCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "FILE", description = "Write the JSON report to FILE (atomically).")
     Path out;
 
+    @Option(names = "--threads", paramLabel = "N", description = "Threads for reading the two files "
+            + "(default: ${DEFAULT-VALUE}; 1 reads them one after the other).", defaultValue = "2")
+    int threads;
+
     @Option(names = "--verbose", description = "Print stack traces of errors.")
     boolean verbose;
 
     @Override
     public Integer call() {
-        LoadedTrajectory ref = input.read(reference, true);
-        LoadedTrajectory est = input.read(estimate, false);
+        MemoryBudget.check(reference, estimate, Runtime.getRuntime().maxMemory());
+        if (convention == Convention.EVO) {
+            input.defaultDuplicates = org.trajeval.core.io.DuplicateTimestamps.KEEP;
+        }
+        LoadedTrajectory[] pair = ParallelRead.both(input, reference, estimate, threads);
+        LoadedTrajectory ref = pair[0];
+        LoadedTrajectory est = pair[1];
         EvaluationOptions options = options(ref, est);
         EvaluationReport report = Evaluator.evaluate(ref, est, options);
         String jsonText = ReportJson.toJson(report);
@@ -191,12 +200,27 @@ public final class EvalCommand implements Callable<Integer> {
         if (pairsFrom != null) {
             o = o.withPairsFrom(pairsFrom);
         }
+        double[] driftLengths = driftLengthsText == null ? null : numbers("--drift-lengths", driftLengthsText);
         if (drift || driftLengths != null || driftStep != null) {
             DriftOptions base = DriftOptions.KITTI;
             o = o.withDrift(new DriftOptions(driftLengths != null ? driftLengths : base.segmentLengthsM(),
                     driftStep != null ? driftStep : base.stepFrames()));
         }
         return o;
+    }
+
+    private static double[] numbers(String option, String text) {
+        String[] parts = text.split(",");
+        double[] v = new double[parts.length];
+        for (int i = 0; i < parts.length; i++) {
+            try {
+                v[i] = Double.parseDouble(parts[i].trim());
+            } catch (NumberFormatException e) {
+                throw new IllegalArgumentException(option + " expects numbers separated by commas (m), found \""
+                        + parts[i].trim() + "\"");
+            }
+        }
+        return v;
     }
 
     /** @return the format names accepted by --format */

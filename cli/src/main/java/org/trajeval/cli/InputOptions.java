@@ -2,6 +2,7 @@ package org.trajeval.cli;
 
 import java.nio.file.Path;
 import org.trajeval.core.io.CsvLayout;
+import org.trajeval.core.io.DuplicateTimestamps;
 import org.trajeval.core.io.LoadedTrajectory;
 import org.trajeval.core.io.ReadOptions;
 import org.trajeval.core.io.TimeUnit;
@@ -31,9 +32,9 @@ public final class InputOptions {
             converter = Enums.TimeUnitConverter.class, description = "Unit of CSV timestamps (default: s).")
     TimeUnit timeUnit;
 
-    @Option(names = "--columns", paramLabel = "T,X,Y,YAW", split = ",", description = "CSV column names of "
+    @Option(names = "--columns", paramLabel = "T,X,Y,YAW", description = "CSV column names of "
             + "time (s), x (m), y (m) and yaw (rad) (default: t,x,y,yaw).")
-    String[] columns;
+    String columnsText;
 
     @Option(names = "--delimiter", paramLabel = "CHAR", description = "CSV field delimiter (default: ',').")
     Character delimiter;
@@ -41,6 +42,14 @@ public final class InputOptions {
     @Option(names = "--sort", description = "Sort poses by timestamp instead of refusing a decreasing one "
             + "(duplicate timestamps are still refused).")
     boolean sort;
+
+    @Option(names = "--duplicates", paramLabel = "refuse|keep", converter = Enums.DuplicatesConverter.class,
+            description = "Poses with equal timestamps: refuse (default; names both lines) or keep them in file "
+                    + "order as evo does (default with --convention evo).")
+    DuplicateTimestamps duplicates;
+
+    /** Policy used when --duplicates is not given (the convention's). */
+    DuplicateTimestamps defaultDuplicates = DuplicateTimestamps.REFUSE;
 
     @Option(names = "--ref-times", paramLabel = "FILE", description = "KITTI times file of the reference "
             + "(one time in s per line).")
@@ -64,6 +73,7 @@ public final class InputOptions {
                 : (estFormat != null ? estFormat : format);
         o = o.withFormat(f);
         CsvLayout base = CsvLayout.DEFAULT;
+        String[] columns = columnsText == null ? null : columnsText.split(",", -1);
         if (columns != null && columns.length != 4) {
             throw new IllegalArgumentException("--columns needs 4 names (time, x, y, yaw), found " + columns.length);
         }
@@ -75,6 +85,7 @@ public final class InputOptions {
         if (sort) {
             o = o.withOrder(TimestampOrder.SORT);
         }
+        o = o.withDuplicates(duplicates != null ? duplicates : defaultDuplicates);
         Path times = reference ? refTimes : estTimes;
         if (times != null) {
             o = o.withKittiTimes(times);

@@ -45,8 +45,9 @@ final class ReportTable {
         row(sb, "RPE trans (m)", r.rpe().transM(), 1.0);
         row(sb, "RPE rot (deg)", r.rpe().rotRad(), 180.0 / Math.PI);
         EvaluationReport.Rpe rpe = r.rpe();
-        sb.append(String.format(Locale.ROOT, "RPE: delta %s %s, %s pairs from the %s: %d pairs", fmt(rpe.delta()),
-                rpe.unit(), rpe.pairSelection().replace('_', ' '), rpe.pairsFrom(), rpe.pairs()));
+        sb.append(String.format(Locale.ROOT, "RPE: delta %s %s, %s, chosen on the %s: %d pairs", fmt(rpe.delta()),
+                rpe.unit(), "all_pairs".equals(rpe.pairSelection()) ? "every start pose" : "consecutive pairs",
+                rpe.pairsFrom(), rpe.pairs()));
         if (rpe.meanHorizonS() != null) {
             sb.append(String.format(Locale.ROOT, ", mean horizon %.4g s / %.4g m", rpe.meanHorizonS(),
                     rpe.meanHorizonM()));

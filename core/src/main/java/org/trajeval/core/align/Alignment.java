@@ -100,6 +100,19 @@ public final class Alignment {
             b += ex * gy - ey * gx;
             ee += ex * ex + ey * ey;
         }
+        return planarFromSums(model, n, new double[] {mex, mey, mez}, new double[] {mgx, mgy, mgz}, a, b, ee, source);
+    }
+
+    /**
+     * The planar closed form from its sums over n pairs of centred points e (estimate) and g
+     * (reference): a = sum (e_x g_x + e_y g_y), b = sum (e_x g_y - e_y g_x), ee = sum |e|^2 (xy).
+     *
+     * @param meanEst mean estimate position (m), 3 values
+     * @param meanRef mean reference position (m), 3 values
+     * @throws InputException DEGENERATE_ALIGNMENT when ee = 0 or a = b = 0
+     */
+    public static AlignmentTransform planarFromSums(AlignmentModel model, int n, double[] meanEst, double[] meanRef,
+            double a, double b, double ee, String source) {
         double norm = Math.hypot(a, b);
         if (!(ee > 0.0) || !(norm > 1e-12 * ee)) {
             throw new InputException(source, 0, null, InputProblem.DEGENERATE_ALIGNMENT,
@@ -112,9 +125,9 @@ public final class Alignment {
         double s = Math.sin(theta);
         double scale = model == AlignmentModel.SIM2 ? norm / ee : 1.0;
         double[] r = {c, -s, 0, s, c, 0, 0, 0, 1};
-        double tx = mgx - scale * (c * mex - s * mey);
-        double ty = mgy - scale * (s * mex + c * mey);
-        double tz = model == AlignmentModel.POSYAW ? mgz - mez : 0.0;
+        double tx = meanRef[0] - scale * (c * meanEst[0] - s * meanEst[1]);
+        double ty = meanRef[1] - scale * (s * meanEst[0] + c * meanEst[1]);
+        double tz = model == AlignmentModel.POSYAW ? meanRef[2] - meanEst[2] : 0.0;
         return new AlignmentTransform(model, r, new double[] {tx, ty, tz}, scale, n);
     }
 

@@ -23,7 +23,9 @@ import org.trajeval.core.metric.RpeResult;
 import org.trajeval.core.report.EvaluationReport;
 import org.trajeval.core.traj.Plane;
 import org.trajeval.core.traj.PlaneProjection;
+import org.trajeval.core.traj.PlanarTrajectory;
 import org.trajeval.core.traj.PoseSequence;
+import org.trajeval.core.stats.ErrorStatistics;
 import org.trajeval.core.traj.Trajectory;
 
 /**
@@ -43,6 +45,15 @@ public final class Evaluator {
      */
     public static EvaluationReport evaluate(LoadedTrajectory reference, LoadedTrajectory estimate,
             EvaluationOptions options) {
+        if (PlanarEvaluator.applies(reference, estimate, options)) {
+            PlanarEvaluator.ReportParts p = PlanarEvaluator.evaluate((PlanarTrajectory) reference.trajectory(),
+                    (PlanarTrajectory) estimate.trajectory(), options, estimate.source());
+            if (p != null) {
+                return report(reference, estimate, options, p.matched(), p.dropped(), 0, p.maxGapS(), p.aMaxMps2(),
+                        p.alignment(), p.ateTrans(), p.ateRot(), p.rpeTrans(), p.rpeRot(), p.pairs(),
+                        p.meanHorizonS(), p.meanHorizonM(), null);
+            }
+        }
         return run(reference, estimate, options).report();
     }
 
@@ -76,24 +87,27 @@ public final class Evaluator {
                 new RpeOptions(options.rpeDelta(), options.rpeUnit(), options.pairSelection(), options.pairsFrom()));
         DriftResult drift = options.drift() == null ? null
                 : LengthNormalisedDrift.compute(refPoses, estPoses, options.drift());
-        EvaluationReport report = report(reference, estimate, options, assoc, alignment, ate, rpe, drift);
+        EvaluationReport report = report(reference, estimate, options, assoc.size(), assoc.droppedEstimate(),
+                assoc.droppedReference(), assoc.maxGapS(), assoc.aMaxMps2(), alignment, ate.trans(), ate.rot(),
+                rpe.trans(), rpe.rot(), rpe.pairs(), rpe.meanHorizonS(), rpe.meanHorizonM(), drift);
         return new Evaluation(report, assoc, refPoses, estPoses, alignment, ate, rpe, drift);
     }
 
     private static EvaluationReport report(LoadedTrajectory reference, LoadedTrajectory estimate,
-            EvaluationOptions o, AssociatedPoses assoc, AlignmentTransform alignment, AteResult ate, RpeResult rpe,
-            DriftResult drift) {
+            EvaluationOptions o, int matched, int dropped, int droppedReference, double maxGapS, double aMaxMps2,
+            AlignmentTransform alignment, ErrorStatistics ateTrans, ErrorStatistics ateRot, ErrorStatistics rpeTrans,
+            ErrorStatistics rpeRot, int pairs, double meanHorizonS, double meanHorizonM, DriftResult drift) {
         boolean interpolating = o.association() != AssociationMethod.NEAREST;
         EvaluationReport.AssociationInfo associationInfo = new EvaluationReport.AssociationInfo(
-                lower(o.association()), assoc.size(), assoc.droppedEstimate(), assoc.droppedReference(), o.maxDiffS(),
-                o.tOffsetS(), lower(o.overlap()), assoc.maxGapS(), interpolating ? assoc.aMaxMps2() : null,
-                interpolating ? assoc.interpolationErrorBoundM() : null);
+                lower(o.association()), matched, dropped, droppedReference, o.maxDiffS(),
+                o.tOffsetS(), lower(o.overlap()), maxGapS, interpolating ? aMaxMps2 : null,
+                interpolating ? aMaxMps2 * maxGapS * maxGapS / 8.0 : null);
         EvaluationReport.AlignmentInfo alignmentInfo = new EvaluationReport.AlignmentInfo(lower(alignment.model()),
                 alignment.rotationRows(), alignment.translation(), alignment.scale(), alignment.posesUsed());
-        EvaluationReport.Rpe rpeInfo = new EvaluationReport.Rpe(EvaluationReport.Stats.of(rpe.trans()),
-                EvaluationReport.Stats.of(rpe.rot()), rpe.pairs(), o.rpeDelta(), o.rpeUnit().symbol(),
-                lower(o.pairSelection()), lower(o.pairsFrom()), finiteOrNull(rpe.meanHorizonS()),
-                finiteOrNull(rpe.meanHorizonM()));
+        EvaluationReport.Rpe rpeInfo = new EvaluationReport.Rpe(EvaluationReport.Stats.of(rpeTrans),
+                EvaluationReport.Stats.of(rpeRot), pairs, o.rpeDelta(), o.rpeUnit().symbol(),
+                lower(o.pairSelection()), lower(o.pairsFrom()), finiteOrNull(meanHorizonS),
+                finiteOrNull(meanHorizonM));
         EvaluationReport.Drift driftInfo = null;
         if (drift != null) {
             List<EvaluationReport.DriftAtLength> per = new ArrayList<>();
@@ -107,7 +121,7 @@ public final class Evaluator {
         return new EvaluationReport(EvaluationReport.SCHEMA, EvaluationReport.SCHEMA_VERSION, Version.TOOL,
                 lower(o.convention()),
                 new EvaluationReport.Inputs(input(reference), input(estimate)), associationInfo, alignmentInfo,
-                new EvaluationReport.Ate(EvaluationReport.Stats.of(ate.trans()), EvaluationReport.Stats.of(ate.rot())),
+                new EvaluationReport.Ate(EvaluationReport.Stats.of(ateTrans), EvaluationReport.Stats.of(ateRot)),
                 rpeInfo, driftInfo);
     }
 

@@ -13,6 +13,9 @@ public final class Angles {
      * @return the equivalent angle in [-pi, pi) (rad)
      */
     public static double wrap(double a) {
+        if (a >= -Math.PI && a < Math.PI) {
+            return a;
+        }
         double twoPi = 2.0 * Math.PI;
         double r = (a + Math.PI) % twoPi;
         if (r < 0) {

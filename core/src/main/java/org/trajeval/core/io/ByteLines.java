@@ -69,14 +69,7 @@ final class ByteLines implements Closeable {
      */
     boolean next() {
         while (true) {
-            int nl = -1;
-            final byte[] b = buf;
-            for (int i = scanFrom; i < limit; i++) {
-                if (b[i] == '\n') {
-                    nl = i;
-                    break;
-                }
-            }
+            int nl = indexOfNewline(buf, scanFrom, limit);
             if (nl >= 0) {
                 setLine(pos, nl);
                 pos = nl + 1;
@@ -94,6 +87,34 @@ final class ByteLines implements Closeable {
             }
             fill();
         }
+    }
+
+    private static final java.lang.invoke.VarHandle LONGS =
+            java.lang.invoke.MethodHandles.byteArrayViewVarHandle(long[].class, java.nio.ByteOrder.LITTLE_ENDIAN);
+    private static final long ONES = 0x0101010101010101L;
+    private static final long HIGHS = 0x8080808080808080L;
+    private static final long NEWLINES = 0x0A0A0A0A0A0A0A0AL;
+
+    /**
+     * @return index of the first '\n' in {@code b[from..to)}, or -1; eight bytes at a time (a byte
+     *     is zero in {@code w ^ NEWLINES} exactly where w has '\n'; the lowest flagged byte of
+     *     {@code (x - ONES) & ~x & HIGHS} is the first zero byte)
+     */
+    static int indexOfNewline(byte[] b, int from, int to) {
+        int i = from;
+        for (; i + 8 <= to; i += 8) {
+            long x = (long) LONGS.get(b, i) ^ NEWLINES;
+            long found = (x - ONES) & ~x & HIGHS;
+            if (found != 0) {
+                return i + (Long.numberOfTrailingZeros(found) >>> 3);
+            }
+        }
+        for (; i < to; i++) {
+            if (b[i] == '\n') {
+                return i;
+            }
+        }
+        return -1;
     }
 
     private void setLine(int from, int to) {

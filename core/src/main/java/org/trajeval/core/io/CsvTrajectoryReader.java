@@ -50,7 +50,7 @@ final class CsvTrajectoryReader {
             CsvColumns columns = CsvColumns.locate(header, layout, source, rows.lineNumber());
             rows.select(columns.index(), columns.names(), columns.units());
             rows.requireFields(columns.fieldCount(), CsvColumns.describe(header, layout.delimiter()));
-            PoseBuffer poses = new PoseBuffer(source, layout.timeColumn(), 4, options.order(), options.maxPoses());
+            PoseBuffer poses = new PoseBuffer(source, layout.timeColumn(), 4, options.order(), options.duplicates(), options.maxPoses());
             TimeUnit unit = layout.timeUnit();
             double[] row = new double[4];
             while (rows.next(row)) {

@@ -1,6 +1,5 @@
 package org.trajeval.core.io;
 
-import ch.randelshofer.fastdoubleparser.JavaDoubleParser;
 import java.util.Locale;
 
 /**
@@ -10,8 +9,8 @@ import java.util.Locale;
  * hex, no {@code d}/{@code f} suffix, no "NaN"/"Infinity") and Python's (no "inf", no
  * underscores), so that a file reads the same here and in evo.
  *
- * <p>The byte version parses in place with fastdoubleparser (no allocation); the String version
- * with the JDK. Both give bit-identical doubles.
+ * <p>The byte version parses in place ({@link DecimalScanner}: Clinger's exact path, else
+ * fastdoubleparser); the String version with the JDK. Both give bit-identical doubles.
  */
 final class DecimalText {
     private DecimalText() {
@@ -68,7 +67,9 @@ final class DecimalText {
 
     /** @return the double nearest to {@code b[from..to)}, which must satisfy {@link #isDecimal(byte[], int, int)} */
     static double parse(byte[] b, int from, int to) {
-        return JavaDoubleParser.parseDouble(b, from, to - from);
+        DecimalScanner scanner = new DecimalScanner();
+        scanner.scan(b, from, to);
+        return scanner.value();
     }
 
     /** @return the double nearest to {@code s}, which must satisfy {@link #isDecimal(CharSequence)} */

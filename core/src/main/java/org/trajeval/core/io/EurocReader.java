@@ -24,7 +24,7 @@ final class EurocReader {
             NumericRows rows = new NumericRows(lines, source, (byte) ',', false);
             rows.select(new int[] {0, 1, 2, 3, 4, 5, 6, 7}, NAMES, UNITS);
             rows.requireAtLeastFields(8, "timestamp [ns], p_x, p_y, p_z [m], q_w, q_x, q_y, q_z, ...");
-            PoseBuffer poses = new PoseBuffer(source, "timestamp", 8, options.order(), options.maxPoses());
+            PoseBuffer poses = new PoseBuffer(source, "timestamp", 8, options.order(), options.duplicates(), options.maxPoses());
             double[] row = new double[8];
             double tolerance = options.quaternionTolerance();
             while (rows.next(row)) {

@@ -30,11 +30,11 @@ final class KittiReader {
             NumericRows rows = new NumericRows(lines, source, NumericRows.WHITESPACE, false);
             rows.select(new int[] {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}, NAMES, UNITS);
             rows.requireFields(12, "r11 r12 r13 tx r21 r22 r23 ty r31 r32 r33 tz, separated by spaces");
-            PoseBuffer poses = new PoseBuffer(source, "index", 8, TimestampOrder.REFUSE_UNSORTED, options.maxPoses());
+            PoseBuffer poses = new PoseBuffer(source, "index", 13, TimestampOrder.REFUSE_UNSORTED,
+                    DuplicateTimestamps.REFUSE, options.maxPoses());
             double[] in = new double[12];
             double[] r = new double[9];
-            double[] q = new double[4];
-            double[] row = new double[8];
+            double[] row = new double[13];
             double tolerance = options.quaternionTolerance();
             while (rows.next(in)) {
                 for (int i = 0; i < 3; i++) {
@@ -50,28 +50,36 @@ final class KittiReader {
                                     + "(max |R^T R - I| = %.3g, det R = %.6g)", tolerance, orthoError, det),
                             rows.lineText());
                 }
-                RotationMatrix.toQuaternion(r, q);
+                // the matrix is kept as read (as evo keeps it): KITTI files are orthonormal only to ~1e-6
                 row[0] = poses.size();
                 row[1] = in[3];
                 row[2] = in[7];
                 row[3] = in[11];
-                row[4] = q[0];
-                row[5] = q[1];
-                row[6] = q[2];
-                row[7] = q[3];
+                System.arraycopy(r, 0, row, 4, 9);
                 poses.add(row, rows.lineNumber());
             }
             c = poses.finish("only comment or blank lines");
             sha = lines.finishSha256();
         }
         if (options.kittiTimes() == null) {
-            return new LoadedTrajectory(source, TrajectoryFormat.KITTI, reason,
-                    SpatialTrajectory.of(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]), sha, true);
+            return new LoadedTrajectory(source, TrajectoryFormat.KITTI, reason, trajectory(c), sha, true);
         }
         double[][] timed = withTimes(c, source, options);
         return new LoadedTrajectory(source, TrajectoryFormat.KITTI, reason + "; times from " + options.kittiTimes(),
-                SpatialTrajectory.of(timed[0], timed[1], timed[2], timed[3], timed[4], timed[5], timed[6], timed[7]),
-                sha, false);
+                trajectory(timed), sha, false);
+    }
+
+    /** Columns t, x, y, z, r00..r22 to a trajectory that keeps the matrices as read. */
+    private static SpatialTrajectory trajectory(double[][] c) {
+        int n = c[0].length;
+        double[] r = new double[9 * n];
+        for (int k = 0; k < 9; k++) {
+            double[] col = c[4 + k];
+            for (int i = 0; i < n; i++) {
+                r[9 * i + k] = col[i];
+            }
+        }
+        return SpatialTrajectory.ofMatrices(c[0], c[1], c[2], c[3], r);
     }
 
     /** Replaces the index stamps by the times file's, one line per pose, with the order policy. */
@@ -84,9 +92,10 @@ final class KittiReader {
             NumericRows rows = new NumericRows(lines, source, NumericRows.WHITESPACE, false);
             rows.select(new int[] {0}, new String[] {"time"}, new String[] {"(s)"});
             rows.requireFields(1, "one time in s per line");
-            PoseBuffer poses = new PoseBuffer(source, "time", 8, options.order(), options.maxPoses());
+            PoseBuffer poses = new PoseBuffer(source, "time", c.length, options.order(), options.duplicates(),
+                    options.maxPoses());
             double[] in = new double[1];
-            double[] row = new double[8];
+            double[] row = new double[c.length];
             int k = 0;
             while (rows.next(in)) {
                 long line = rows.lineNumber();
@@ -98,7 +107,7 @@ final class KittiReader {
                             rows.selectedText(0));
                 }
                 row[0] = in[0];
-                for (int col = 1; col < 8; col++) {
+                for (int col = 1; col < c.length; col++) {
                     row[col] = c[col][k];
                 }
                 int code = poses.add(row, line);

@@ -22,7 +22,9 @@ final class NumericRows {
     private int[] fieldEnd = new int[32];
     private int count;
 
+    private final DecimalScanner scanner = new DecimalScanner();
     private int[] select = new int[0];
+    private int[] slotOfField = new int[0];
     private String[] names = new String[0];
     private String[] units = new String[0];
     private int exactFields = -1;
@@ -52,6 +54,15 @@ final class NumericRows {
         this.select = fieldIndex.clone();
         this.names = columnNames.clone();
         this.units = columnUnits.clone();
+        int max = -1;
+        for (int f : fieldIndex) {
+            max = Math.max(max, f);
+        }
+        this.slotOfField = new int[max + 1];
+        java.util.Arrays.fill(slotOfField, -1);
+        for (int k = 0; k < fieldIndex.length; k++) {
+            slotOfField[fieldIndex[k]] = k;
+        }
     }
 
     /** Every data line must have exactly {@code n} fields; {@code describe} says which, for messages. */
@@ -68,24 +79,29 @@ final class NumericRows {
     }
 
     /**
-     * Advances to the next line that is neither blank nor a comment and splits it.
+     * Advances to the next line that is neither blank nor a comment and splits it into fields.
      *
      * @return false at the end of the file
      */
     boolean nextContentLine() {
+        if (!nextDataLine()) {
+            return false;
+        }
+        split(lines.buffer(), lines.start(), lines.end());
+        return true;
+    }
+
+    private boolean nextDataLine() {
         while (lines.next()) {
             byte[] b = lines.buffer();
-            int from = lines.start();
             int to = lines.end();
-            int i = from;
+            int i = lines.start();
             while (i < to && (b[i] == ' ' || b[i] == '\t')) {
                 i++;
             }
-            if (i == to || b[i] == '#') {
-                continue;
+            if (i < to && b[i] != '#') {
+                return true;
             }
-            split(b, from, to);
-            return true;
         }
         return false;
     }
@@ -97,25 +113,114 @@ final class NumericRows {
      * @throws InputException on a wrong field count, a field that is not a number, or a non-finite one
      */
     boolean next(double[] row) {
-        if (!nextContentLine()) {
+        if (!nextDataLine()) {
             return false;
         }
-        checkCount();
+        if (exactFields < 0 || !parseInOnePass(row)) {
+            parseCarefully(row);
+        }
+        return true;
+    }
+
+    /**
+     * The fast path: one pass over the line, numbers scanned in place.
+     *
+     * @return false on anything unusual (wrong count, bad or non-finite number, quote); the
+     *     careful path then says what, or reads what this path does not
+     */
+    private boolean parseInOnePass(double[] row) {
         final byte[] b = lines.buffer();
+        final int to = lines.end();
+        final int[] slots = slotOfField;
+        int p = lines.start();
+        int field = 0;
+        int parsed = 0;
+        if (delimiter == WHITESPACE) {
+            while (true) {
+                while (p < to && (b[p] == ' ' || b[p] == '\t')) {
+                    p++;
+                }
+                if (p >= to) {
+                    break;
+                }
+                int slot = field < slots.length ? slots[field] : -1;
+                if (slot >= 0) {
+                    int e = scanner.scan(b, p, to);
+                    if (e == p || (e < to && b[e] != ' ' && b[e] != '\t')) {
+                        return false;
+                    }
+                    double v = scanner.value();
+                    if (Double.isInfinite(v)) {
+                        return false;
+                    }
+                    row[slot] = v;
+                    parsed++;
+                    p = e;
+                } else {
+                    while (p < to && b[p] != ' ' && b[p] != '\t') {
+                        p++;
+                    }
+                }
+                field++;
+            }
+        } else {
+            final byte d = delimiter;
+            while (true) {
+                while (p < to && (b[p] == ' ' || b[p] == '\t')) {
+                    p++;
+                }
+                int e;
+                int slot = field < slots.length ? slots[field] : -1;
+                if (slot >= 0) {
+                    e = scanner.scan(b, p, to);
+                    if (e == p) {
+                        return false;
+                    }
+                    while (e < to && (b[e] == ' ' || b[e] == '\t')) {
+                        e++;
+                    }
+                    if (e < to && b[e] != d) {
+                        return false;
+                    }
+                    double v = scanner.value();
+                    if (Double.isInfinite(v)) {
+                        return false;
+                    }
+                    row[slot] = v;
+                    parsed++;
+                } else {
+                    e = p;
+                    while (e < to && b[e] != d) {
+                        if (b[e] == '"') {
+                            return false;
+                        }
+                        e++;
+                    }
+                }
+                field++;
+                if (e >= to) {
+                    break;
+                }
+                p = e + 1;
+            }
+        }
+        return field == exactFields && parsed == select.length;
+    }
+
+    /** The careful path: split, check the count, check each selected field; throws on a problem. */
+    private void parseCarefully(double[] row) {
+        final byte[] b = lines.buffer();
+        split(b, lines.start(), lines.end());
+        checkCount();
         for (int k = 0; k < select.length; k++) {
             int f = select[k];
             int s = fieldStart[f];
             int e = fieldEnd[f];
-            if (!DecimalText.isDecimal(b, s, e)) {
+            if (scanner.scan(b, s, e) != e || s == e || Double.isInfinite(scanner.value())) {
                 throw badNumber(k, text(s, e));
             }
-            double v = DecimalText.parse(b, s, e);
-            if (!Double.isFinite(v)) {
-                throw badNumber(k, text(s, e));
-            }
-            row[k] = v;
+            row[k] = scanner.value();
         }
-        return true;
     }
 
     private void checkCount() {
@@ -219,9 +324,10 @@ final class NumericRows {
         return text(fieldStart[i], fieldEnd[i]);
     }
 
-    /** @return the selected field {@code k} of the current line as text (for messages) */
+    /** @return the selected field {@code k} of the current line as text (for messages; splits the line again) */
     String selectedText(int k) {
-        return field(select[k]);
+        split(lines.buffer(), lines.start(), lines.end());
+        return select[k] < count ? field(select[k]) : "";
     }
 
     private String text(int s, int e) {

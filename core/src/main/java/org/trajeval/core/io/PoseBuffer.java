@@ -23,6 +23,7 @@ final class PoseBuffer {
     private final String source;
     private final String timeColumn;
     private final TimestampOrder order;
+    private final boolean keepDuplicates;
     private final long maxPoses;
     private final double[][] columns;
     private long[] lines;
@@ -35,7 +36,9 @@ final class PoseBuffer {
      * @param timeColumn name of the time column for messages
      * @param columnCount number of columns, the time included
      */
-    PoseBuffer(String source, String timeColumn, int columnCount, TimestampOrder order, long maxPoses) {
+    PoseBuffer(String source, String timeColumn, int columnCount, TimestampOrder order,
+            DuplicateTimestamps duplicates, long maxPoses) {
+        this.keepDuplicates = duplicates == DuplicateTimestamps.KEEP;
         this.source = source;
         this.timeColumn = timeColumn;
         this.order = order;
@@ -53,7 +56,7 @@ final class PoseBuffer {
      */
     int add(double[] row, long line) {
         double t = row[0];
-        if (lines == null && n > 0 && !(t > lastT)) {
+        if (lines == null && n > 0 && !(t > lastT) && !(t == lastT && keepDuplicates)) {
             return t < lastT ? DECREASING : DUPLICATE;
         }
         if (n == columns[0].length || n >= maxPoses) {
@@ -139,7 +142,7 @@ final class PoseBuffer {
                 out[c] = dst;
             }
             double[] t = out[0];
-            for (int i = 1; i < n; i++) {
+            for (int i = 1; i < n && !keepDuplicates; i++) {
                 if (t[i] == t[i - 1]) {
                     long a = lines[perm[i - 1]];
                     long b = lines[perm[i]];

@@ -63,7 +63,8 @@ final class QuotedCsvReader {
     private static PlanarTrajectory parse(CSVParser parser, String source, ReadOptions options) {
         CsvLayout layout = options.csv();
         Iterator<CSVRecord> records = parser.iterator();
-        CSVRecord first = nextRecord(records, parser, source);
+        long[] lastEnd = {0};
+        CSVRecord first = nextRecord(records, parser, source, lastEnd);
         if (first == null) {
             throw FileProblems.empty(source, "and it has no header line either");
         }
@@ -73,11 +74,11 @@ final class QuotedCsvReader {
         }
         long headerLine = parser.getCurrentLineNumber();
         CsvColumns columns = CsvColumns.locate(header, layout, source, headerLine);
-        PoseBuffer poses = new PoseBuffer(source, layout.timeColumn(), 4, options.order(), options.maxPoses());
+        PoseBuffer poses = new PoseBuffer(source, layout.timeColumn(), 4, options.order(), options.duplicates(), options.maxPoses());
         TimeUnit unit = layout.timeUnit();
         double[] row = new double[4];
         CSVRecord record;
-        while ((record = nextRecord(records, parser, source)) != null) {
+        while ((record = nextRecord(records, parser, source, lastEnd)) != null) {
             long line = parser.getCurrentLineNumber();
             if (record.size() != columns.fieldCount()) {
                 throw new InputException(source, line, null, InputProblem.WRONG_FIELD_COUNT,
@@ -104,13 +105,16 @@ final class QuotedCsvReader {
         return PlanarTrajectory.of(c[0], c[1], c[2], c[3]);
     }
 
-    private static CSVRecord nextRecord(Iterator<CSVRecord> records, CSVParser parser, String source) {
+    /** @param lastEnd holds the line on which the previous record ended; updated */
+    private static CSVRecord nextRecord(Iterator<CSVRecord> records, CSVParser parser, String source, long[] lastEnd) {
         try {
-            return records.hasNext() ? records.next() : null;
+            CSVRecord r = records.hasNext() ? records.next() : null;
+            lastEnd[0] = parser.getCurrentLineNumber();
+            return r;
         } catch (UncheckedIOException | IllegalStateException e) {
             // Commons CSV reports broken quoting this way ("EOF reached before encapsulated token finished")
             Throwable cause = e.getCause() != null ? e.getCause() : e;
-            throw new InputException(source, parser.getCurrentLineNumber() + 1, null, InputProblem.UNREADABLE,
+            throw new InputException(source, lastEnd[0] + 1, null, InputProblem.UNREADABLE,
                     "the file is not valid CSV (" + cause.getMessage() + "); is a quote left open?", null, e);
         }
     }

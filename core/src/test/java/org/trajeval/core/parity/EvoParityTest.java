@@ -28,6 +28,7 @@ import org.trajeval.core.eval.Evaluation;
 import org.trajeval.core.eval.EvaluationOptions;
 import org.trajeval.core.eval.Evaluator;
 import org.trajeval.core.eval.PlanarProjection;
+import org.trajeval.core.io.DuplicateTimestamps;
 import org.trajeval.core.io.LoadedTrajectory;
 import org.trajeval.core.io.ReadOptions;
 import org.trajeval.core.io.TrajectoryFormat;
@@ -59,7 +60,10 @@ class EvoParityTest {
             int id = index++;
             String name = String.format(Locale.ROOT, "#%04d %s vs %s %s", id, rec.get("ref").asText(),
                     rec.get("est").asText(), rec.get("options").toString());
-            tests.add(DynamicTest.dynamicTest(name, () -> check(dir, rec)));
+            tests.add(DynamicTest.dynamicTest(name, () -> {
+                CURRENT.set(name);
+                check(dir, rec);
+            }));
         }
         return tests.stream();
     }
@@ -73,7 +77,9 @@ class EvoParityTest {
     }
 
     static synchronized LoadedTrajectory load(Path dir, String file, TrajectoryFormat format) {
-        return CACHE.computeIfAbsent(file + "/" + format, k -> TempReader.read(dir.resolve(file), format));
+        return CACHE.computeIfAbsent(file + "/" + format, k -> TrajectoryReader.read(dir.resolve(file),
+                // evo keeps duplicate stamps (fr2_desk_groundtruth.txt, V102.txt have some): so do we here
+                ReadOptions.defaults().withFormat(format).withDuplicates(DuplicateTimestamps.KEEP)));
     }
 
     /** The evo options of a record as trajeval options (the mapping the README's table states). */
@@ -177,9 +183,34 @@ class EvoParityTest {
     }
 
     /** Absolute tolerance for records whose true value is 0 (see README: rounding floor). */
+    static final ThreadLocal<String> CURRENT = ThreadLocal.withInitial(() -> "");
+
     static final ThreadLocal<Double> NOISE_FLOOR = ThreadLocal.withInitial(() -> ABS_TOL);
 
+    /** Worst relative difference where the relative criterion governs (for the summary line). */
+    private static double worstRelative;
+    private static String worstWhat = "";
+    private static int compared;
+
+    @org.junit.jupiter.api.AfterAll
+    static void printSummary() {
+        System.out.printf(Locale.ROOT, "evo parity: %d statistics compared, worst relative difference %.3g (%s)%n",
+                compared, worstRelative, worstWhat);
+    }
+
+    static synchronized void track(String what, double expected, double actual, double floor) {
+        compared++;
+        if (REL_TOL * Math.abs(expected) >= Math.max(ABS_TOL, floor)) {
+            double rel = Math.abs(expected - actual) / Math.abs(expected);
+            if (rel > worstRelative) {
+                worstRelative = rel;
+                worstWhat = what;
+            }
+        }
+    }
+
     static void assertClose(String what, double expected, double actual, double absTol) {
+        track(CURRENT.get() + " " + what, expected, actual, absTol);
         double tol = Math.max(Math.max(ABS_TOL, absTol), REL_TOL * Math.abs(expected));
         assertTrue(Math.abs(expected - actual) <= tol, () -> String.format(Locale.ROOT,
                 "%s: evo %.17g, trajeval %.17g, difference %.3g > tolerance %.3g", what, expected, actual,
