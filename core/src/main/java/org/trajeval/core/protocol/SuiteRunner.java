@@ -371,7 +371,8 @@ public final class SuiteRunner {
             double ti = est.t(i) + tOffsetS;
             double err = Double.NaN;
             int j = upperIndex(ref, ti);
-            if (j > 0 && j < ref.size() || (j == 0 && ref.t(0) == ti)) {
+            boolean inside = j < ref.size() && (j > 0 || ref.t(0) == ti);
+            if (inside) {
                 int j0 = Math.max(0, j - 1);
                 int j1 = Math.min(ref.size() - 1, j);
                 double w = ref.t(j1) == ref.t(j0) ? 0.0 : (ti - ref.t(j0)) / (ref.t(j1) - ref.t(j0));
