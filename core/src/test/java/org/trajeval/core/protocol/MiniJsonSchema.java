@@ -10,15 +10,15 @@ import java.util.Map;
  * A small JSON Schema checker for the keywords docs/suite-report.schema.json uses: type, const,
  * enum, required, properties, additionalProperties, items, anyOf, $ref (to #/$defs), pattern.
  */
-final class MiniJsonSchema {
+public final class MiniJsonSchema {
     private final JsonNode root;
 
-    MiniJsonSchema(JsonNode root) {
+    public MiniJsonSchema(JsonNode root) {
         this.root = root;
     }
 
     /** @return the violations, empty when the document conforms */
-    List<String> check(JsonNode doc) {
+    public List<String> check(JsonNode doc) {
         List<String> out = new ArrayList<>();
         check(root, doc, "$", out);
         return out;
