@@ -62,7 +62,8 @@ public final class ReportStore {
             Optional<LedgerEntry> earlier = view.find(m.runId(), hash.content());
             if (earlier.isPresent()) {
                 int v = earlier.get().version();
-                return new RunResult(Outcome.DUPLICATE, m.runId(), v, reportFile(m.runId(), v), null);
+                return new RunResult(Outcome.DUPLICATE, m.runId(), v, reportFile(m.runId(), v), null,
+                        earlier.get().source());
             }
             int version = view.latestVersion(m.runId()) + 1;
             Instant now = clock.instant();
@@ -72,7 +73,7 @@ public final class ReportStore {
             Path file = reportFile(m.runId(), version);
             ReportJson.writeAtomically(file, ReportJson.toJson(report));
             view.append(new LedgerEntry(m.runId(), hash.content(), version, now.toEpochMilli(), job.source()));
-            return new RunResult(Outcome.REPORTED, m.runId(), version, file, null);
+            return new RunResult(Outcome.REPORTED, m.runId(), version, file, null, null);
         });
     }
 }

@@ -42,7 +42,8 @@ public final class RunProcessor {
             var earlier = store.find(runId, hash);
             if (earlier.isPresent()) {
                 int v = earlier.get().version();
-                return new RunResult(Outcome.DUPLICATE, runId, v, store.reportFile(runId, v), null);
+                return new RunResult(Outcome.DUPLICATE, runId, v, store.reportFile(runId, v), null,
+                        earlier.get().source());
             }
         }
         EvaluationReport evaluation;

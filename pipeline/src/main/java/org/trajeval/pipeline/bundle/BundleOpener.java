@@ -59,6 +59,43 @@ public final class BundleOpener {
         };
     }
 
+    /**
+     * Resolves a bundle location (from a run event) under {@code base}: relative, no {@code ..},
+     * no symbolic link on the way, an existing folder or .zip file.
+     *
+     * @throws InputException PATH_ESCAPES or UNREADABLE naming the field {@code bundle}
+     */
+    public static Path locate(Path base, String location, String source) {
+        Path root = base.toAbsolutePath().normalize();
+        if (location == null || location.isBlank()) {
+            throw new InputException(source, 0, "bundle", InputProblem.INVALID_CONFIGURATION,
+                    "bundle must name a folder or .zip under the bundle base", location);
+        }
+        String r = location.replace('\\', '/');
+        if (r.startsWith("/") || Path.of(location).isAbsolute()) {
+            throw new InputException(source, 0, "bundle", InputProblem.PATH_ESCAPES,
+                    "bundle must be a path relative to the bundle base, not an absolute path", location);
+        }
+        for (String part : r.split("/")) {
+            if (part.equals("..")) {
+                throw new InputException(source, 0, "bundle", InputProblem.PATH_ESCAPES,
+                        "bundle must stay inside the bundle base ('..' is not allowed)", location);
+            }
+        }
+        Path p = root.resolve(r).normalize();
+        for (Path q = p; q != null && q.startsWith(root) && !q.equals(root); q = q.getParent()) {
+            if (Files.isSymbolicLink(q)) {
+                throw new InputException(source, 0, "bundle", InputProblem.PATH_ESCAPES,
+                        "bundle must not go through a symbolic link", location);
+            }
+        }
+        if (!p.startsWith(root) || !Files.exists(p, java.nio.file.LinkOption.NOFOLLOW_LINKS)) {
+            throw new InputException(source, 0, "bundle", InputProblem.UNREADABLE,
+                    "bundle must name an existing folder or .zip under the bundle base", location);
+        }
+        return p;
+    }
+
     private RunJob openFolder(Path dir, String source) {
         RunManifest manifest;
         try {

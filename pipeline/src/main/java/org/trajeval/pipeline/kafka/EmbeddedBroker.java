@@ -71,6 +71,9 @@ public final class EmbeddedBroker implements AutoCloseable {
             p.setProperty("share.coordinator.state.topic.replication.factor", "1");
             p.setProperty("share.coordinator.state.topic.min.isr", "1");
             p.setProperty("group.initial.rebalance.delay.ms", "0");
+            p.setProperty("transaction.state.log.num.partitions", "3");
+            p.setProperty("transaction.abort.timed.out.transaction.cleanup.interval.ms", "1000");
+            p.setProperty("group.min.session.timeout.ms", "1000");
             p.setProperty("num.partitions", "3");
             p.setProperty("auto.create.topics.enable", "false");
             // the cleaner's dedupe buffer defaults to 128 MiB: far too much for a small heap
