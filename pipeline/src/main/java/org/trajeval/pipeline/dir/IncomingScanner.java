@@ -52,7 +52,7 @@ final class IncomingScanner {
         }
         if (name.endsWith(".done")) {
             String base = name.substring(0, name.length() - ".done".length());
-            if (base.isEmpty()) {
+            if (base.isEmpty() || ignored(base)) {
                 return null;
             }
             if (Files.isDirectory(incoming.resolve(base), LinkOption.NOFOLLOW_LINKS)) {
