@@ -63,12 +63,15 @@ public record EvaluationOptions(Convention convention, AssociationMethod associa
         }
     }
 
-    /** @return the preset of a convention (see {@link Convention}) */
+    /**
+     * The preset of a convention (see {@link Convention}). The lesson's preset aligns with se2
+     * (the lesson is planar); {@link #preset(Convention, boolean)} picks se3 for SE(3) data.
+     */
     public static EvaluationOptions preset(Convention convention) {
         return switch (convention) {
             case LESSON -> new EvaluationOptions(convention, AssociationMethod.INTERPOLATE, 0.01, 0.0,
-                    OverlapPolicy.CROP, AlignmentModel.SE3, -1, PlanarProjection.NONE, 1.0, RpeUnit.SECONDS,
-                    PairSelection.CONSECUTIVE, PairsFrom.ESTIMATE, null);
+                    OverlapPolicy.CROP, AlignmentModel.SE2, -1, PlanarProjection.NONE, 1.0, RpeUnit.SECONDS,
+                    PairSelection.ALL_PAIRS, PairsFrom.ESTIMATE, null);
             case EVO -> new EvaluationOptions(convention, AssociationMethod.NEAREST, 0.01, 0.0,
                     OverlapPolicy.CROP, AlignmentModel.NONE, -1, PlanarProjection.NONE, 1.0, RpeUnit.FRAMES,
                     PairSelection.CONSECUTIVE, PairsFrom.ESTIMATE, null);
@@ -76,6 +79,20 @@ public record EvaluationOptions(Convention convention, AssociationMethod associa
                     OverlapPolicy.CROP, AlignmentModel.NONE, -1, PlanarProjection.NONE, 1.0, RpeUnit.FRAMES,
                     PairSelection.CONSECUTIVE, PairsFrom.ESTIMATE, DriftOptions.KITTI);
         };
+    }
+
+    /**
+     * The preset of a convention for the given data: for the lesson's convention the rigid
+     * alignment is se2 for planar data and se3 for SE(3) data.
+     *
+     * @param planarData true when both trajectories are planar (or are projected before alignment)
+     */
+    public static EvaluationOptions preset(Convention convention, boolean planarData) {
+        EvaluationOptions o = preset(convention);
+        if (convention == Convention.LESSON && !planarData) {
+            return o.withAlignment(AlignmentModel.SE3);
+        }
+        return o;
     }
 
     /** @return a copy with another association method */

@@ -12,9 +12,10 @@ import java.nio.file.Path;
  * @param quaternionTolerance largest accepted | |q| - 1 |
  * @param maxBytes largest accepted file size (bytes)
  * @param maxPoses largest accepted number of poses
+ * @param duplicates what to do with equal timestamps
  */
 public record ReadOptions(TrajectoryFormat format, CsvLayout csv, TimestampOrder order, Path kittiTimes,
-        double quaternionTolerance, long maxBytes, long maxPoses) {
+        double quaternionTolerance, long maxBytes, long maxPoses, DuplicateTimestamps duplicates) {
 
     /** Default largest file: 4 GiB. */
     public static final long DEFAULT_MAX_BYTES = 4L << 30;
@@ -24,31 +25,36 @@ public record ReadOptions(TrajectoryFormat format, CsvLayout csv, TimestampOrder
     /** @return auto-detected format, default CSV layout, refuse unsorted, tolerance 1e-3 */
     public static ReadOptions defaults() {
         return new ReadOptions(null, CsvLayout.DEFAULT, TimestampOrder.REFUSE_UNSORTED, null, 1e-3,
-                DEFAULT_MAX_BYTES, DEFAULT_MAX_POSES);
+                DEFAULT_MAX_BYTES, DEFAULT_MAX_POSES, DuplicateTimestamps.REFUSE);
     }
 
     /** @return a copy with a fixed format ({@code null}: auto) */
     public ReadOptions withFormat(TrajectoryFormat f) {
-        return new ReadOptions(f, csv, order, kittiTimes, quaternionTolerance, maxBytes, maxPoses);
+        return new ReadOptions(f, csv, order, kittiTimes, quaternionTolerance, maxBytes, maxPoses, duplicates);
     }
 
     /** @return a copy with another CSV layout */
     public ReadOptions withCsv(CsvLayout c) {
-        return new ReadOptions(format, c, order, kittiTimes, quaternionTolerance, maxBytes, maxPoses);
+        return new ReadOptions(format, c, order, kittiTimes, quaternionTolerance, maxBytes, maxPoses, duplicates);
     }
 
     /** @return a copy with another timestamp-order policy */
     public ReadOptions withOrder(TimestampOrder o) {
-        return new ReadOptions(format, csv, o, kittiTimes, quaternionTolerance, maxBytes, maxPoses);
+        return new ReadOptions(format, csv, o, kittiTimes, quaternionTolerance, maxBytes, maxPoses, duplicates);
     }
 
     /** @return a copy with a KITTI times file */
     public ReadOptions withKittiTimes(Path p) {
-        return new ReadOptions(format, csv, order, p, quaternionTolerance, maxBytes, maxPoses);
+        return new ReadOptions(format, csv, order, p, quaternionTolerance, maxBytes, maxPoses, duplicates);
     }
 
     /** @return a copy with other size limits */
     public ReadOptions withLimits(long bytes, long poses) {
-        return new ReadOptions(format, csv, order, kittiTimes, quaternionTolerance, bytes, poses);
+        return new ReadOptions(format, csv, order, kittiTimes, quaternionTolerance, bytes, poses, duplicates);
+    }
+
+    /** @return a copy with another duplicate-timestamp policy */
+    public ReadOptions withDuplicates(DuplicateTimestamps d) {
+        return new ReadOptions(format, csv, order, kittiTimes, quaternionTolerance, maxBytes, maxPoses, d);
     }
 }

@@ -1,8 +1,18 @@
 package org.trajeval.core.io;
 
+import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Objects;
+import org.trajeval.core.InputException;
+import org.trajeval.core.InputProblem;
 
-/** Reads trajectory files of every supported format. */
+/**
+ * Reads trajectory files of every supported format ({@link TrajectoryFormat}): planar CSV, TUM,
+ * KITTI and EuRoC. Numbers are read as evo reads them (the double nearest to the decimal text);
+ * times end up in seconds. Every refusal is an {@link InputException} naming file, line, column,
+ * what was expected and what was found; no other exception escapes for bad file content.
+ */
 public final class TrajectoryReader {
     private TrajectoryReader() {
     }
@@ -10,10 +20,66 @@ public final class TrajectoryReader {
     /**
      * Reads one file.
      *
-     * @throws org.trajeval.core.InputException on any bad input, naming file, line, column and
-     *     what was expected
+     * @param path the file
+     * @param options format (or {@code null} to detect it), CSV layout, order policy, limits
+     * @return the trajectory, its format, why that format, and the SHA-256 of the file's bytes
+     * @throws InputException on any bad input, naming file, line, column and what was expected
      */
     public static LoadedTrajectory read(Path path, ReadOptions options) {
-        throw new UnsupportedOperationException("readers not yet implemented");
+        Objects.requireNonNull(path, "path");
+        Objects.requireNonNull(options, "options");
+        checkOptions(options);
+        String source = path.toString();
+        checkFile(path, source, options.maxBytes());
+        TrajectoryFormat format = options.format();
+        String reason = "given";
+        if (format == null) {
+            FormatDetector.Detection d = FormatDetector.detect(path, source, options.csv());
+            format = d.format();
+            reason = d.reason();
+        }
+        return switch (format) {
+            case CSV -> CsvTrajectoryReader.read(path, source, options, reason);
+            case TUM -> TumReader.read(path, source, options, reason);
+            case KITTI -> KittiReader.read(path, source, options, reason);
+            case EUROC -> EurocReader.read(path, source, options, reason);
+        };
+    }
+
+    /** Refuses a missing file, a directory, an empty file or one over the byte limit. */
+    static void checkFile(Path path, String source, long maxBytes) {
+        long size;
+        try {
+            if (Files.isDirectory(path)) {
+                throw new InputException(source, 0, null, InputProblem.UNREADABLE,
+                        "this is a directory, a trajectory file was expected", null);
+            }
+            size = Files.size(path);
+        } catch (IOException | SecurityException e) {
+            throw FileProblems.unreadable(source, e);
+        }
+        if (size > maxBytes) {
+            throw FileProblems.tooManyBytes(source, size, maxBytes);
+        }
+        if (size == 0 && Files.isRegularFile(path)) {
+            throw FileProblems.empty(source, "it is empty (0 bytes)");
+        }
+    }
+
+    private static void checkOptions(ReadOptions o) {
+        if (o.csv() == null || o.order() == null || o.csv().timeUnit() == null || o.csv().timeColumn() == null
+                || o.csv().xColumn() == null || o.csv().yColumn() == null || o.csv().yawColumn() == null) {
+            throw new InputException(null, 0, null, InputProblem.INVALID_OPTION,
+                    "the read options must give a CSV layout (column names, time unit) and an order policy", null);
+        }
+        CsvTrajectoryReader.checkDelimiter(o.csv().delimiter());
+        if (!(o.quaternionTolerance() >= 0.0 && o.quaternionTolerance() < 1.0)) {
+            throw new InputException(null, 0, "quaternionTolerance", InputProblem.INVALID_OPTION,
+                    "the quaternion tolerance must be at least 0 and below 1", String.valueOf(o.quaternionTolerance()));
+        }
+        if (o.maxBytes() <= 0 || o.maxPoses() <= 0) {
+            throw new InputException(null, 0, "limits", InputProblem.INVALID_OPTION,
+                    "the byte and pose limits must be positive", o.maxBytes() + " bytes, " + o.maxPoses() + " poses");
+        }
     }
 }

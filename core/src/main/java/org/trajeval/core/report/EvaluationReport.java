@@ -72,8 +72,9 @@ public record EvaluationReport(
      * @param tOffsetS offset added to the estimate stamps (s)
      * @param overlap crop or strict
      * @param maxGapS largest sampling gap h of the reference over the matched span (s)
-     * @param aMaxMps2 largest acceleration norm of the reference, estimated by second differences (m/s^2)
-     * @param interpErrorBoundM the lesson's Proposition 2 bound A_max h^2 / 8 (m)
+     * @param aMaxMps2 largest acceleration norm of the reference over the matched span, estimated by
+     *     second divided differences (m/s^2); null for nearest association
+     * @param interpErrorBoundM the lesson's Proposition 2 bound A_max h^2 / 8 (m); null for nearest association
      */
     @JsonPropertyOrder({"method", "matched", "dropped", "dropped_reference", "max_diff_s", "t_offset_s", "overlap",
         "max_gap_s", "a_max_mps2", "interp_error_bound_m"})
@@ -81,8 +82,8 @@ public record EvaluationReport(
             @JsonProperty("dropped") int dropped, @JsonProperty("dropped_reference") int droppedReference,
             @JsonProperty("max_diff_s") double maxDiffS, @JsonProperty("t_offset_s") double tOffsetS,
             @JsonProperty("overlap") String overlap, @JsonProperty("max_gap_s") double maxGapS,
-            @JsonProperty("a_max_mps2") double aMaxMps2,
-            @JsonProperty("interp_error_bound_m") double interpErrorBoundM) {
+            @JsonProperty("a_max_mps2") Double aMaxMps2,
+            @JsonProperty("interp_error_bound_m") Double interpErrorBoundM) {
     }
 
     /**
@@ -125,8 +126,8 @@ public record EvaluationReport(
     public record Rpe(@JsonProperty("trans_m") Stats transM, @JsonProperty("rot_rad") Stats rotRad,
             @JsonProperty("pairs") long pairs, @JsonProperty("delta") double delta,
             @JsonProperty("unit") String unit, @JsonProperty("pair_selection") String pairSelection,
-            @JsonProperty("pairs_from") String pairsFrom, @JsonProperty("mean_horizon_s") double meanHorizonS,
-            @JsonProperty("mean_horizon_m") double meanHorizonM) {
+            @JsonProperty("pairs_from") String pairsFrom, @JsonProperty("mean_horizon_s") Double meanHorizonS,
+            @JsonProperty("mean_horizon_m") Double meanHorizonM) {
     }
 
     /**
@@ -139,8 +140,8 @@ public record EvaluationReport(
      * @param perLength the same figures per segment length
      */
     @JsonPropertyOrder({"trans_pct", "rot_deg_per_m", "segments", "step_frames", "per_length"})
-    public record Drift(@JsonProperty("trans_pct") double transPct,
-            @JsonProperty("rot_deg_per_m") double rotDegPerM, @JsonProperty("segments") int segments,
+    public record Drift(@JsonProperty("trans_pct") Double transPct,
+            @JsonProperty("rot_deg_per_m") Double rotDegPerM, @JsonProperty("segments") int segments,
             @JsonProperty("step_frames") int stepFrames,
             @JsonProperty("per_length") java.util.List<DriftAtLength> perLength) {
     }
@@ -152,8 +153,8 @@ public record EvaluationReport(
      * @param segments number of segments of this length
      */
     @JsonPropertyOrder({"length_m", "trans_pct", "rot_deg_per_m", "segments"})
-    public record DriftAtLength(@JsonProperty("length_m") double lengthM, @JsonProperty("trans_pct") double transPct,
-            @JsonProperty("rot_deg_per_m") double rotDegPerM, @JsonProperty("segments") int segments) {
+    public record DriftAtLength(@JsonProperty("length_m") double lengthM, @JsonProperty("trans_pct") Double transPct,
+            @JsonProperty("rot_deg_per_m") Double rotDegPerM, @JsonProperty("segments") int segments) {
     }
 
     /**

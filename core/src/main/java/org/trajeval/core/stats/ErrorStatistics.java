@@ -51,6 +51,36 @@ public record ErrorStatistics(double rmse, double mean, double median, double st
         return new ErrorStatistics(Math.sqrt(sse / count), mean, median, Math.sqrt(sq / count), min, max, sse, count);
     }
 
+    /**
+     * As {@link #of(double[], int)} but without a copy: {@code values[0..count)} is reordered
+     * (the median is found by selection in linear expected time). The sums are taken in index
+     * order before any reordering, so the result equals {@link #of(double[], int)} bit for bit.
+     */
+    public static ErrorStatistics ofInPlace(double[] values, int count) {
+        if (count == 0) {
+            return of(values, 0);
+        }
+        double sum = 0.0;
+        double sse = 0.0;
+        double min = Double.POSITIVE_INFINITY;
+        double max = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < count; i++) {
+            double v = values[i];
+            sum += v;
+            sse += v * v;
+            min = Math.min(min, v);
+            max = Math.max(max, v);
+        }
+        double mean = sum / count;
+        double sq = 0.0;
+        for (int i = 0; i < count; i++) {
+            double d = values[i] - mean;
+            sq += d * d;
+        }
+        double median = Selection.median(values, count);
+        return new ErrorStatistics(Math.sqrt(sse / count), mean, median, Math.sqrt(sq / count), min, max, sse, count);
+    }
+
     /** Computes the statistics of all of {@code values}. */
     public static ErrorStatistics of(double[] values) {
         return of(values, values.length);

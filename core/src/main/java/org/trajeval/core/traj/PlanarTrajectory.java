@@ -1,6 +1,7 @@
 package org.trajeval.core.traj;
 
 import java.util.Arrays;
+import org.trajeval.core.geom.Rotations;
 
 /**
  * Planar SE(2) trajectory: timestamps t (s), positions x, y (m) and heading yaw (rad, counter-
@@ -88,16 +89,14 @@ public final class PlanarTrajectory implements Trajectory {
     @Override
     public SpatialTrajectory toSpatial() {
         int n = size();
-        double[] z = new double[n];
-        double[] qw = new double[n];
-        double[] qx = new double[n];
-        double[] qy = new double[n];
-        double[] qz = new double[n];
+        double[] r = new double[9 * n];
+        double[] q = new double[4 * n];
         for (int i = 0; i < n; i++) {
-            qw[i] = Math.cos(0.5 * yaw[i]);
-            qz[i] = Math.sin(0.5 * yaw[i]);
+            Rotations.aboutZ(yaw[i], r, 9 * i);
+            q[4 * i] = Math.cos(0.5 * yaw[i]);
+            q[4 * i + 3] = Math.sin(0.5 * yaw[i]);
         }
-        return SpatialTrajectory.ofTrusted(t, x, y, z, qw, qx, qy, qz);
+        return SpatialTrajectory.ofPoses(t.clone(), PoseSequence.of(x.clone(), y.clone(), new double[n], r), q);
     }
 
     @Override

@@ -1,44 +1,37 @@
 package org.trajeval.core.traj;
 
-import java.util.Arrays;
+import org.trajeval.core.geom.Rotations;
 
 /**
- * Full SE(3) trajectory: timestamps t (s), positions x, y, z (m) and orientations as unit
- * quaternions (qw, qx, qy, qz), Hamilton convention, rotating body-frame vectors into the world
- * frame: {@code p_world = R(q) p_body + t}. Worked example: a rotation of +90 deg about +z is
- * q = (cos 45 deg, 0, 0, sin 45 deg) and maps the body x axis to world +y.
+ * Full SE(3) trajectory: timestamps t (s), positions x, y, z (m) and orientations as rotation
+ * matrices R that map body-frame vectors into the world frame: {@code p_world = R p_body + t}.
+ * Built from unit quaternions (w, x, y, z; Hamilton) or directly from matrices (KITTI). Worked
+ * example: a rotation of +90 deg about +z is q = (cos 45 deg, 0, 0, sin 45 deg) and maps the
+ * body x axis to world +y. See {@link Rotations} for the storage layout.
  *
- * <p>Immutable: the arrays handed to {@link #of} are owned by the trajectory afterwards.
+ * <p>Immutable: the arrays handed to the factories are owned by the trajectory afterwards.
  */
 public final class SpatialTrajectory implements Trajectory {
-    private final double[] t;
-    private final double[] x;
-    private final double[] y;
-    private final double[] z;
-    private final double[] qw;
-    private final double[] qx;
-    private final double[] qy;
-    private final double[] qz;
+    /** Rounding error of the norm of a quaternion normalised in double precision: 4 ulp(1). */
+    private static final double UNIT_NORM_ROUNDING = 4 * Math.ulp(1.0);
 
-    private SpatialTrajectory(double[] t, double[] x, double[] y, double[] z,
-            double[] qw, double[] qx, double[] qy, double[] qz) {
+    private final double[] t;
+    private final PoseSequence poses;
+    private final double[] q;
+
+    private SpatialTrajectory(double[] t, PoseSequence poses, double[] q) {
         this.t = t;
-        this.x = x;
-        this.y = y;
-        this.z = z;
-        this.qw = qw;
-        this.qx = qx;
-        this.qy = qy;
-        this.qz = qz;
+        this.poses = poses;
+        this.q = q;
     }
 
     /**
-     * Takes ownership of the arrays. Quaternions are used as given (readers check and report
-     * their norm; see {@code QuaternionCheck}); they are normalised here so that every rotation
-     * is exact.
+     * From quaternions (w, x, y, z), normalised unless already unit within 4 ulp (then kept bit
+     * for bit; evo interpolates the quaternions, not the matrices); the matrices are computed
+     * with {@link Rotations#fromQuaternion}.
      *
      * @throws IllegalArgumentException on different lengths, non-finite values, a zero
-     *     quaternion or timestamps that do not increase strictly
+     *     quaternion or decreasing timestamps
      */
     public static SpatialTrajectory of(double[] t, double[] x, double[] y, double[] z,
             double[] qw, double[] qx, double[] qy, double[] qz) {
@@ -47,25 +40,48 @@ public final class SpatialTrajectory implements Trajectory {
         for (double[] c : new double[][] {x, y, z, qw, qx, qy, qz}) {
             TimestampCheck.requireFinite("pose", c);
         }
-        for (int i = 0; i < t.length; i++) {
+        int n = t.length;
+        double[] r = new double[9 * n];
+        double[] q = new double[4 * n];
+        for (int i = 0; i < n; i++) {
             double norm = Math.sqrt(qw[i] * qw[i] + qx[i] * qx[i] + qy[i] * qy[i] + qz[i] * qz[i]);
             if (!(norm > 0.0)) {
                 throw new IllegalArgumentException("quaternion " + i + " is zero");
             }
-            if (norm != 1.0) {
+            // a quaternion already unit within rounding is kept bit for bit (written trajectories
+            // read back exactly); others are normalised (evo normalises inside its conversions too)
+            if (Math.abs(norm - 1.0) > UNIT_NORM_ROUNDING) {
                 qw[i] /= norm;
                 qx[i] /= norm;
                 qy[i] /= norm;
                 qz[i] /= norm;
             }
+            Rotations.fromQuaternion(qw[i], qx[i], qy[i], qz[i], r, 9 * i);
+            q[4 * i] = qw[i];
+            q[4 * i + 1] = qx[i];
+            q[4 * i + 2] = qy[i];
+            q[4 * i + 3] = qz[i];
         }
-        return new SpatialTrajectory(t, x, y, z, qw, qx, qy, qz);
+        return new SpatialTrajectory(t, PoseSequence.of(x, y, z, r), q);
     }
 
-    /** For arrays already checked (same length, increasing t, unit quaternions). */
-    static SpatialTrajectory ofTrusted(double[] t, double[] x, double[] y, double[] z,
-            double[] qw, double[] qx, double[] qy, double[] qz) {
-        return new SpatialTrajectory(t, x, y, z, qw, qx, qy, qz);
+    /**
+     * From rotation matrices (9 per pose, row-major), kept exactly as given (KITTI files are
+     * orthonormal only to about 1e-6; evo keeps them as read, so do we).
+     */
+    public static SpatialTrajectory ofMatrices(double[] t, double[] x, double[] y, double[] z, double[] r) {
+        TimestampCheck.requireSameLength(t.length, x, y, z);
+        TimestampCheck.requireStrictlyIncreasing(t);
+        TimestampCheck.requireFinite("x", x);
+        TimestampCheck.requireFinite("y", y);
+        TimestampCheck.requireFinite("z", z);
+        TimestampCheck.requireFinite("rotation", r);
+        return new SpatialTrajectory(t, PoseSequence.of(x, y, z, r), null);
+    }
+
+    /** From timestamps and poses (package use: interpolation, transforms). */
+    static SpatialTrajectory ofPoses(double[] t, PoseSequence poses, double[] q) {
+        return new SpatialTrajectory(t, poses, q);
     }
 
     @Override
@@ -80,37 +96,67 @@ public final class SpatialTrajectory implements Trajectory {
 
     @Override
     public double x(int i) {
-        return x[i];
+        return poses.x(i);
     }
 
     @Override
     public double y(int i) {
-        return y[i];
+        return poses.y(i);
     }
 
     @Override
     public double z(int i) {
-        return z[i];
+        return poses.z(i);
     }
 
-    /** @return quaternion scalar part of pose {@code i} */
+    /** @return the poses without their timestamps */
+    public PoseSequence poses() {
+        return poses;
+    }
+
+    /**
+     * Quaternion (w, x, y, z) of pose i as read (not re-derived from the matrix) when the
+     * trajectory was built from quaternions; otherwise derived from the matrix with w >= 0.
+     *
+     * @param out receives w, x, y, z
+     */
+    public void quaternion(int i, double[] out) {
+        if (q != null) {
+            System.arraycopy(q, 4 * i, out, 0, 4);
+        } else {
+            double[] r = new double[9];
+            poses.rotation(i, r, 0);
+            Rotations.toQuaternion(r, 0, out);
+        }
+    }
+
+    /** @return quaternion scalar part w of pose i (as read, or derived from the matrix) */
     public double qw(int i) {
-        return qw[i];
+        return quaternionPart(i, 0);
     }
 
-    /** @return quaternion x part of pose {@code i} */
+    /** @return quaternion x part of pose i */
     public double qx(int i) {
-        return qx[i];
+        return quaternionPart(i, 1);
     }
 
-    /** @return quaternion y part of pose {@code i} */
+    /** @return quaternion y part of pose i */
     public double qy(int i) {
-        return qy[i];
+        return quaternionPart(i, 2);
     }
 
-    /** @return quaternion z part of pose {@code i} */
+    /** @return quaternion z part of pose i */
     public double qz(int i) {
-        return qz[i];
+        return quaternionPart(i, 3);
+    }
+
+    private double quaternionPart(int i, int k) {
+        if (q != null) {
+            return q[4 * i + k];
+        }
+        double[] out = new double[4];
+        quaternion(i, out);
+        return out[k];
     }
 
     @Override
@@ -126,21 +172,22 @@ public final class SpatialTrajectory implements Trajectory {
     @Override
     public PlanarTrajectory toPlanar() {
         int n = size();
+        double[] x = new double[n];
+        double[] y = new double[n];
         double[] yaw = new double[n];
+        double[] r = new double[9];
         for (int i = 0; i < n; i++) {
-            // R00 = 1 - 2(qy^2 + qz^2), R10 = 2(qx qy + qw qz)
-            double r00 = 1.0 - 2.0 * (qy[i] * qy[i] + qz[i] * qz[i]);
-            double r10 = 2.0 * (qx[i] * qy[i] + qw[i] * qz[i]);
-            yaw[i] = Math.atan2(r10, r00);
+            x[i] = poses.x(i);
+            y[i] = poses.y(i);
+            poses.rotation(i, r, 0);
+            yaw[i] = Rotations.yaw(r, 0);
         }
-        return PlanarTrajectory.of(t.clone(), x.clone(), y.clone(), yaw);
+        return PlanarTrajectory.of(t.clone(), x, y, yaw);
     }
 
     @Override
     public SpatialTrajectory slice(int from, int to) {
-        return new SpatialTrajectory(Arrays.copyOfRange(t, from, to), Arrays.copyOfRange(x, from, to),
-                Arrays.copyOfRange(y, from, to), Arrays.copyOfRange(z, from, to),
-                Arrays.copyOfRange(qw, from, to), Arrays.copyOfRange(qx, from, to),
-                Arrays.copyOfRange(qy, from, to), Arrays.copyOfRange(qz, from, to));
+        double[] nq = q == null ? null : java.util.Arrays.copyOfRange(q, 4 * from, 4 * to);
+        return new SpatialTrajectory(java.util.Arrays.copyOfRange(t, from, to), poses.slice(from, to), nq);
     }
 }

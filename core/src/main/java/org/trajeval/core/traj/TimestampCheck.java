@@ -18,8 +18,8 @@ final class TimestampCheck {
             if (!Double.isFinite(t[i])) {
                 throw new IllegalArgumentException("timestamp " + i + " is not finite: " + t[i]);
             }
-            if (i > 0 && !(t[i] > t[i - 1])) {
-                throw new IllegalArgumentException("timestamps must increase strictly: t[" + i + "] = " + t[i]
+            if (i > 0 && !(t[i] >= t[i - 1])) {
+                throw new IllegalArgumentException("timestamps must not decrease: t[" + i + "] = " + t[i]
                         + " s after t[" + (i - 1) + "] = " + t[i - 1] + " s");
             }
         }

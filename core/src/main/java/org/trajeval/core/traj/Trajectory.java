@@ -1,7 +1,8 @@
 package org.trajeval.core.traj;
 
 /**
- * A time-stamped sequence of poses with strictly increasing timestamps (s), stored column-wise
+ * A time-stamped sequence of poses with non-decreasing timestamps (s; readers refuse
+ * duplicates unless told to keep them, as evo does), stored column-wise
  * in primitive arrays. Either planar SE(2) ({@link PlanarTrajectory}: t, x, y, yaw) or full
  * SE(3) ({@link SpatialTrajectory}: t, position, unit quaternion).
  */

@@ -1,0 +1,66 @@
+package org.trajeval.cli;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+import org.trajeval.core.InputException;
+import org.trajeval.core.InputProblem;
+
+/**
+ * Refuses, before reading, a pair whose poses would not fit in the JVM's heap, with a message
+ * naming the option that raises the heap. The pose count is estimated from the file size and the
+ * mean length of the first lines; the bytes per pose are measured figures of the two evaluation
+ * paths (planar CSV fast path, SE(3) general path) with a safety margin.
+ */
+final class MemoryBudget {
+    /** Planar fast path: 4 input columns + interpolated reference + one error buffer, with margin (B). */
+    static final long PLANAR_BYTES_PER_POSE = 160;
+    /** SE(3) general path: positions, 3x3 rotations, associated copies and error arrays, with margin (B). */
+    static final long SPATIAL_BYTES_PER_POSE = 1200;
+
+    private MemoryBudget() {
+    }
+
+    static void check(Path reference, Path estimate, long maxHeapBytes) {
+        long poses = estimatePoses(reference) + estimatePoses(estimate);
+        boolean planar = isCsv(reference) && isCsv(estimate);
+        long need = poses * (planar ? PLANAR_BYTES_PER_POSE : SPATIAL_BYTES_PER_POSE);
+        if (need > maxHeapBytes) {
+            throw new InputException(estimate.toString(), 0, null, InputProblem.TOO_LARGE, String.format(Locale.ROOT,
+                    "the pair holds about %,d poses and needs about %.1f GiB of memory, but the JVM may use %.1f GiB;"
+                            + " raise the heap (e.g. TRAJEVAL_OPTS=-Xmx%dg) or split the run into shorter spans",
+                    poses, need / 1073741824.0, maxHeapBytes / 1073741824.0,
+                    (long) Math.ceil(need * 1.2 / 1073741824.0)), null);
+        }
+    }
+
+    private static boolean isCsv(Path p) {
+        return p.getFileName() != null && p.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".csv");
+    }
+
+    /** Estimated number of lines: size / mean length of the first 64 KiB's lines; 0 when unreadable. */
+    static long estimatePoses(Path p) {
+        try {
+            long size = Files.size(p);
+            byte[] head = new byte[65536];
+            int n;
+            try (InputStream in = Files.newInputStream(p)) {
+                n = in.readNBytes(head, 0, head.length);
+            }
+            int lines = 0;
+            for (int i = 0; i < n; i++) {
+                if (head[i] == '\n') {
+                    lines++;
+                }
+            }
+            if (lines == 0) {
+                return 1;
+            }
+            return (long) (size / ((double) n / lines)) + 1;
+        } catch (IOException | SecurityException e) {
+            return 0; // the reader reports the problem with its own message
+        }
+    }
+}

@@ -1,0 +1,78 @@
+package org.trajeval.cli;
+
+import java.util.Locale;
+import org.trajeval.core.report.EvaluationReport;
+
+/** Renders an evaluation report as a readable table (units in every row). */
+final class ReportTable {
+    private ReportTable() {
+    }
+
+    static String render(EvaluationReport r) {
+        StringBuilder sb = new StringBuilder();
+        EvaluationReport.InputInfo ref = r.inputs().reference();
+        EvaluationReport.InputInfo est = r.inputs().estimate();
+        sb.append(String.format(Locale.ROOT, "reference  %s (%s, %d poses; %s)%n", ref.path(), ref.format(),
+                ref.poses(), ref.formatReason()));
+        sb.append(String.format(Locale.ROOT, "estimate   %s (%s, %d poses; %s)%n", est.path(), est.format(),
+                est.poses(), est.formatReason()));
+        EvaluationReport.AssociationInfo a = r.association();
+        sb.append(String.format(Locale.ROOT, "convention %s; association %s: %d matched, %d estimate poses dropped",
+                r.convention(), a.method(), a.matched(), a.dropped()));
+        if (!"interpolate".equals(a.method())) {
+            sb.append(String.format(Locale.ROOT, ", max diff %.4g s", a.maxDiffS()));
+        }
+        if (a.tOffsetS() != 0.0) {
+            sb.append(String.format(Locale.ROOT, ", offset %.4g s", a.tOffsetS()));
+        }
+        sb.append(String.format(Locale.ROOT, "%n           reference max gap h = %.4g s", a.maxGapS()));
+        if (a.interpErrorBoundM() != null) {
+            sb.append(String.format(Locale.ROOT, ", interpolation error bound A_max h^2/8 = %.3g m (A_max %.3g m/s^2)",
+                    a.interpErrorBoundM(), a.aMaxMps2()));
+        }
+        sb.append(System.lineSeparator());
+        EvaluationReport.AlignmentInfo al = r.alignment();
+        double[][] rot = al.rotation();
+        double yaw = Math.toDegrees(Math.atan2(rot[1][0], rot[0][0]));
+        sb.append(String.format(Locale.ROOT, "alignment  %s on %d poses: translation (%.4f, %.4f, %.4f) m, yaw %.4f deg,"
+                + " scale %.6f%n", al.model(), al.posesUsed(), al.translationM()[0], al.translationM()[1],
+                al.translationM()[2], yaw, al.scale()));
+        sb.append(System.lineSeparator());
+        sb.append(String.format(Locale.ROOT, "%-16s %12s %12s %12s %12s %12s %12s %8s%n", "metric", "rmse", "mean",
+                "median", "std", "min", "max", "n"));
+        row(sb, "ATE trans (m)", r.ate().transM(), 1.0);
+        row(sb, "ATE rot (deg)", r.ate().rotRad(), 180.0 / Math.PI);
+        row(sb, "RPE trans (m)", r.rpe().transM(), 1.0);
+        row(sb, "RPE rot (deg)", r.rpe().rotRad(), 180.0 / Math.PI);
+        EvaluationReport.Rpe rpe = r.rpe();
+        sb.append(String.format(Locale.ROOT, "RPE: delta %s %s, %s, chosen on the %s: %d pairs", fmt(rpe.delta()),
+                rpe.unit(), "all_pairs".equals(rpe.pairSelection()) ? "every start pose" : "consecutive pairs",
+                rpe.pairsFrom(), rpe.pairs()));
+        if (rpe.meanHorizonS() != null) {
+            sb.append(String.format(Locale.ROOT, ", mean horizon %.4g s / %.4g m", rpe.meanHorizonS(),
+                    rpe.meanHorizonM()));
+        }
+        sb.append(System.lineSeparator());
+        if (r.drift() != null) {
+            EvaluationReport.Drift d = r.drift();
+            sb.append(String.format(Locale.ROOT, "drift: %s %% translation, %s deg/m rotation over %d segments%n",
+                    d.transPct() == null ? "n/a" : String.format(Locale.ROOT, "%.4f", d.transPct()),
+                    d.rotDegPerM() == null ? "n/a" : String.format(Locale.ROOT, "%.6f", d.rotDegPerM()),
+                    d.segments()));
+        }
+        return sb.toString();
+    }
+
+    private static void row(StringBuilder sb, String name, EvaluationReport.Stats s, double k) {
+        if (s.n() == 0) {
+            sb.append(String.format(Locale.ROOT, "%-16s %12s%n", name, "(no values)"));
+            return;
+        }
+        sb.append(String.format(Locale.ROOT, "%-16s %12.6f %12.6f %12.6f %12.6f %12.6f %12.6f %8d%n", name,
+                s.rmse() * k, s.mean() * k, s.median() * k, s.std() * k, s.min() * k, s.max() * k, s.n()));
+    }
+
+    private static String fmt(double v) {
+        return v == Math.rint(v) ? String.valueOf((long) v) : String.valueOf(v);
+    }
+}

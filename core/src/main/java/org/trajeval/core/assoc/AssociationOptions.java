@@ -1,0 +1,12 @@
+package org.trajeval.core.assoc;
+
+/**
+ * Settings of the time association.
+ *
+ * @param method how poses are paired
+ * @param maxDiffS max timestamp difference for nearest matching (s)
+ * @param tOffsetS offset added to the estimate's timestamps (s)
+ * @param overlap what to do with estimate poses outside the reference's span (interpolation)
+ */
+public record AssociationOptions(AssociationMethod method, double maxDiffS, double tOffsetS, OverlapPolicy overlap) {
+}

@@ -1,0 +1,211 @@
+package org.trajeval.core.io;
+
+import java.io.Closeable;
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.security.MessageDigest;
+import java.security.NoSuchAlgorithmException;
+import java.util.HexFormat;
+import org.trajeval.core.InputException;
+import org.trajeval.core.InputProblem;
+
+/**
+ * Reads a file line by line as bytes, in big blocks, without a String or any other object per
+ * line, and hashes every byte (SHA-256) in the same pass. After {@link #next()} returns true the
+ * current line is {@code buffer()[start() .. end())}, without its {@code \n} or {@code \r\n}.
+ * A UTF-8 byte-order mark at the start of the file is skipped.
+ */
+final class ByteLines implements Closeable {
+    /** Block size of one read (bytes). */
+    static final int BLOCK_BYTES = 1 << 20;
+    /** Longest accepted line (bytes). */
+    static final int MAX_LINE_BYTES = 1 << 26;
+
+    private final String source;
+    private final InputStream in;
+    private final MessageDigest sha;
+    private final long maxBytes;
+    private byte[] buf = new byte[BLOCK_BYTES];
+    private int pos;
+    private int limit;
+    private int scanFrom;
+    private boolean eof;
+    private boolean started;
+    private long bytesRead;
+    private long lineNumber;
+    private int start;
+    private int end;
+
+    private ByteLines(String source, InputStream in, long maxBytes) {
+        this.source = source;
+        this.in = in;
+        this.maxBytes = maxBytes;
+        this.sha = sha256();
+    }
+
+    /** Opens a file; refuses a missing or unreadable one as {@link InputProblem#UNREADABLE}. */
+    static ByteLines open(Path path, String source, long maxBytes) {
+        try {
+            return new ByteLines(source, Files.newInputStream(path), maxBytes);
+        } catch (IOException | SecurityException e) {
+            throw FileProblems.unreadable(source, e);
+        }
+    }
+
+    static MessageDigest sha256() {
+        try {
+            return MessageDigest.getInstance("SHA-256");
+        } catch (NoSuchAlgorithmException e) {
+            throw new IllegalStateException("every Java platform has SHA-256", e);
+        }
+    }
+
+    /**
+     * Advances to the next line.
+     *
+     * @return false at the end of the file
+     */
+    boolean next() {
+        while (true) {
+            int nl = indexOfNewline(buf, scanFrom, limit);
+            if (nl >= 0) {
+                setLine(pos, nl);
+                pos = nl + 1;
+                scanFrom = pos;
+                return true;
+            }
+            scanFrom = limit;
+            if (eof) {
+                if (pos < limit) {
+                    setLine(pos, limit);
+                    pos = limit;
+                    return true;
+                }
+                return false;
+            }
+            fill();
+        }
+    }
+
+    private static final java.lang.invoke.VarHandle LONGS =
+            java.lang.invoke.MethodHandles.byteArrayViewVarHandle(long[].class, java.nio.ByteOrder.LITTLE_ENDIAN);
+    private static final long ONES = 0x0101010101010101L;
+    private static final long HIGHS = 0x8080808080808080L;
+    private static final long NEWLINES = 0x0A0A0A0A0A0A0A0AL;
+
+    /**
+     * @return index of the first '\n' in {@code b[from..to)}, or -1; eight bytes at a time (a byte
+     *     is zero in {@code w ^ NEWLINES} exactly where w has '\n'; the lowest flagged byte of
+     *     {@code (x - ONES) & ~x & HIGHS} is the first zero byte)
+     */
+    static int indexOfNewline(byte[] b, int from, int to) {
+        int i = from;
+        for (; i + 8 <= to; i += 8) {
+            long x = (long) LONGS.get(b, i) ^ NEWLINES;
+            long found = (x - ONES) & ~x & HIGHS;
+            if (found != 0) {
+                return i + (Long.numberOfTrailingZeros(found) >>> 3);
+            }
+        }
+        for (; i < to; i++) {
+            if (b[i] == '\n') {
+                return i;
+            }
+        }
+        return -1;
+    }
+
+    private void setLine(int from, int to) {
+        lineNumber++;
+        start = from;
+        end = to > from && buf[to - 1] == '\r' ? to - 1 : to;
+    }
+
+    private void fill() {
+        if (pos > 0) {
+            int keep = limit - pos;
+            System.arraycopy(buf, pos, buf, 0, keep);
+            scanFrom -= pos;
+            limit = keep;
+            pos = 0;
+        }
+        if (limit == buf.length) {
+            if (buf.length >= MAX_LINE_BYTES) {
+                throw new InputException(source, lineNumber + 1, null, InputProblem.TOO_LARGE,
+                        "a line must be shorter than " + MAX_LINE_BYTES + " bytes (is this a trajectory file?)", null);
+            }
+            byte[] bigger = new byte[buf.length * 2];
+            System.arraycopy(buf, 0, bigger, 0, limit);
+            buf = bigger;
+        }
+        int n;
+        try {
+            n = in.read(buf, limit, buf.length - limit);
+        } catch (IOException e) {
+            throw FileProblems.unreadable(source, e);
+        }
+        if (n < 0) {
+            eof = true;
+            return;
+        }
+        sha.update(buf, limit, n);
+        limit += n;
+        bytesRead += n;
+        if (bytesRead > maxBytes) {
+            throw FileProblems.tooManyBytes(source, bytesRead, maxBytes);
+        }
+        if (!started && (limit >= 3 || eof)) {
+            started = true;
+            if (limit >= 3 && (buf[0] & 0xff) == 0xEF && (buf[1] & 0xff) == 0xBB && (buf[2] & 0xff) == 0xBF) {
+                pos = 3;
+                scanFrom = 3;
+            }
+        }
+    }
+
+    /** @return the bytes holding the current line (valid until the next call of {@link #next()}) */
+    byte[] buffer() {
+        return buf;
+    }
+
+    /** @return offset of the current line's first byte */
+    int start() {
+        return start;
+    }
+
+    /** @return offset just past the current line's last byte (line end excluded) */
+    int end() {
+        return end;
+    }
+
+    /** @return 1-based number of the current line */
+    long lineNumber() {
+        return lineNumber;
+    }
+
+    /** @return the current line as text (for messages only) */
+    String lineText() {
+        return new String(buf, start, end - start, java.nio.charset.StandardCharsets.UTF_8);
+    }
+
+    /** Reads the rest of the file (so that the hash covers every byte) and returns the SHA-256, lower-case hex. */
+    String finishSha256() {
+        while (!eof) {
+            pos = limit;
+            scanFrom = limit;
+            fill();
+        }
+        return HexFormat.of().formatHex(sha.digest());
+    }
+
+    @Override
+    public void close() {
+        try {
+            in.close();
+        } catch (IOException e) {
+            // nothing was lost: every byte needed is already read
+        }
+    }
+}

@@ -1,0 +1,84 @@
+package org.trajeval.core.io;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.trajeval.core.InputException;
+import org.trajeval.core.InputProblem;
+import org.trajeval.core.traj.PlanarTrajectory;
+
+/**
+ * Planar CSV with a header row ({@code t,x,y,yaw} by default; names, delimiter and time unit
+ * from the {@link CsvLayout}; extra columns ignored; {@code #} comment lines and blank lines
+ * skipped). Plain numeric files take the fast path: bytes parsed in place, no object per line.
+ * A file with a quote character anywhere is read again with full CSV semantics
+ * ({@link QuotedCsvReader}, Commons CSV); both paths give bit-identical doubles.
+ */
+final class CsvTrajectoryReader {
+    /** The remedy for stamps in the wrong unit. */
+    static final String TIME_UNIT_REMEDY = "pass --time-unit %s";
+
+    private CsvTrajectoryReader() {
+    }
+
+    static LoadedTrajectory read(Path path, String source, ReadOptions options, String reason) {
+        CsvLayout layout = options.csv();
+        if (layout.delimiter() > 127) {
+            return QuotedCsvReader.read(path, source, options, reason);
+        }
+        try {
+            return readPlain(path, source, options, reason);
+        } catch (NeedsQuotedCsv quoted) {
+            return QuotedCsvReader.read(path, source, options, reason);
+        }
+    }
+
+    /** The fast path: throws {@link NeedsQuotedCsv} at the first quote character. */
+    static LoadedTrajectory readPlain(Path path, String source, ReadOptions options, String reason) {
+        CsvLayout layout = options.csv();
+        try (ByteLines lines = ByteLines.open(path, source, options.maxBytes())) {
+            NumericRows rows = new NumericRows(lines, source, (byte) layout.delimiter(), true);
+            if (!rows.nextContentLine()) {
+                throw FileProblems.empty(source, "and it has no header line either (expected "
+                        + String.join(String.valueOf(layout.delimiter()), layout.timeColumn(), layout.xColumn(),
+                                layout.yColumn(), layout.yawColumn()) + ")");
+            }
+            List<String> header = new ArrayList<>(rows.fieldCount());
+            for (int i = 0; i < rows.fieldCount(); i++) {
+                header.add(rows.field(i));
+            }
+            CsvColumns columns = CsvColumns.locate(header, layout, source, rows.lineNumber());
+            rows.select(columns.index(), columns.names(), columns.units());
+            rows.requireFields(columns.fieldCount(), CsvColumns.describe(header, layout.delimiter()));
+            PoseBuffer poses = new PoseBuffer(source, layout.timeColumn(), 4, options.order(), options.duplicates(), options.maxPoses());
+            TimeUnit unit = layout.timeUnit();
+            double[] row = new double[4];
+            while (rows.next(row)) {
+                double stamp = row[0];
+                row[0] = unit.toSeconds(stamp);
+                if (TimeUnitCheck.implausible(row[0])) {
+                    throw TimeUnitCheck.refuse(source, rows.lineNumber(), layout.timeColumn(), stamp, unit,
+                            TIME_UNIT_REMEDY, rows.selectedText(0));
+                }
+                int code = poses.add(row, rows.lineNumber());
+                if (code != PoseBuffer.ACCEPTED) {
+                    throw poses.orderProblem(code, row[0], rows.lineNumber(), rows.selectedText(0));
+                }
+            }
+            double[][] c = poses.finish("only a header line");
+            String sha = lines.finishSha256();
+            return new LoadedTrajectory(source, TrajectoryFormat.CSV, reason,
+                    PlanarTrajectory.of(c[0], c[1], c[2], c[3]), sha, false);
+        }
+    }
+
+    /** Refuses a delimiter that cannot separate fields. */
+    static void checkDelimiter(char d) {
+        if (d == '"' || d == '#' || d == '\n' || d == '\r' || d == '.' || d == '-' || d == '+'
+                || Character.isLetterOrDigit(d)) {
+            throw new InputException(null, 0, "delimiter", InputProblem.INVALID_OPTION,
+                    "the CSV delimiter must not be a quote, '#', a line break, a digit, a letter, '.', '+' or '-'",
+                    String.valueOf(d));
+        }
+    }
+}

@@ -1,0 +1,151 @@
+package org.trajeval.core.io;
+
+import ch.randelshofer.fastdoubleparser.JavaDoubleParser;
+
+/**
+ * Scans a decimal number in place, {@code [+-]? (d+ [.d*] | .d+) ([eE] [+-]? d+)?}, and gives
+ * the double nearest to it (the semantics of {@link Double#parseDouble} and of Python's
+ * {@code float}, so numbers read as evo reads them). No allocation.
+ *
+ * <p>Common short numbers take Clinger's exact path: a decimal significand m &le; 2^53 and a
+ * power of ten 10^k with |k| &le; 22 are both exact doubles, so one IEEE multiplication or
+ * division {@code m * 10^k} / {@code m / 10^-k} is the correctly rounded result. Every other
+ * number (more digits, larger exponents) goes to fastdoubleparser's
+ * {@code JavaDoubleParser.parseDouble(byte[], offset, length)}, which is also correctly rounded.
+ */
+final class DecimalScanner {
+    private static final double[] POWERS_OF_TEN = {
+        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11,
+        1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    private static final long EXACT_SIGNIFICAND = 1L << 53;
+    private static final long ACCUMULATE_LIMIT = (Long.MAX_VALUE - 9) / 10;
+    private static final long EIGHT_DIGITS_LIMIT = (Long.MAX_VALUE - 99_999_999L) / 100_000_000L;
+    private static final java.lang.invoke.VarHandle LONGS =
+            java.lang.invoke.MethodHandles.byteArrayViewVarHandle(long[].class, java.nio.ByteOrder.LITTLE_ENDIAN);
+
+    private double value;
+
+    /**
+     * Scans the longest prefix of {@code b[from..to)} that is a number.
+     *
+     * @return the index just past that prefix, or {@code from} if there is none; when larger than
+     *     {@code from}, {@link #value()} holds the number (possibly infinite on overflow)
+     */
+    int scan(byte[] b, int from, int to) {
+        int i = from;
+        boolean negative = false;
+        if (i < to && (b[i] == '-' || b[i] == '+')) {
+            negative = b[i] == '-';
+            i++;
+        }
+        long m = 0;
+        boolean exact = true;
+        int intStart = i;
+        while (i + 8 <= to && m <= EIGHT_DIGITS_LIMIT) {
+            long eight = (long) LONGS.get(b, i);
+            if (!isEightDigits(eight)) {
+                break;
+            }
+            m = m * 100_000_000L + eightDigits(eight);
+            i += 8;
+        }
+        while (i < to) {
+            int d = b[i] - '0';
+            if (d < 0 || d > 9) {
+                break;
+            }
+            if (m <= ACCUMULATE_LIMIT) {
+                m = m * 10 + d;
+            } else {
+                exact = false;
+            }
+            i++;
+        }
+        int intDigits = i - intStart;
+        int fracDigits = 0;
+        if (i < to && b[i] == '.') {
+            int j = i + 1;
+            while (j + 8 <= to && m <= EIGHT_DIGITS_LIMIT) {
+                long eight = (long) LONGS.get(b, j);
+                if (!isEightDigits(eight)) {
+                    break;
+                }
+                m = m * 100_000_000L + eightDigits(eight);
+                j += 8;
+            }
+            while (j < to) {
+                int d = b[j] - '0';
+                if (d < 0 || d > 9) {
+                    break;
+                }
+                if (m <= ACCUMULATE_LIMIT) {
+                    m = m * 10 + d;
+                } else {
+                    exact = false;
+                }
+                j++;
+            }
+            fracDigits = j - i - 1;
+            if (intDigits + fracDigits > 0) {
+                i = j;
+            }
+        }
+        if (intDigits + fracDigits == 0) {
+            return from;
+        }
+        int exponent = 0;
+        if (i < to && (b[i] == 'e' || b[i] == 'E')) {
+            int j = i + 1;
+            boolean negativeExponent = false;
+            if (j < to && (b[j] == '-' || b[j] == '+')) {
+                negativeExponent = b[j] == '-';
+                j++;
+            }
+            int expStart = j;
+            int e = 0;
+            while (j < to) {
+                int d = b[j] - '0';
+                if (d < 0 || d > 9) {
+                    break;
+                }
+                if (e < 100_000) {
+                    e = e * 10 + d;
+                }
+                j++;
+            }
+            if (j > expStart) {
+                exponent = negativeExponent ? -e : e;
+                i = j;
+            }
+        }
+        int k = exponent - fracDigits;
+        if (exact && m == 0) {
+            value = negative ? -0.0 : 0.0;
+        } else if (exact && m <= EXACT_SIGNIFICAND && k >= -22 && k <= 22) {
+            double v = k < 0 ? (double) m / POWERS_OF_TEN[-k] : (double) m * POWERS_OF_TEN[k];
+            value = negative ? -v : v;
+        } else {
+            value = JavaDoubleParser.parseDouble(b, from, i - from);
+        }
+        return i;
+    }
+
+    /** @return true if all eight bytes (little-endian) are ASCII digits (fast_float's test) */
+    private static boolean isEightDigits(long v) {
+        return ((v & 0xF0F0F0F0F0F0F0F0L) | (((v + 0x0606060606060606L) & 0xF0F0F0F0F0F0F0F0L) >>> 4))
+                == 0x3333333333333333L;
+    }
+
+    /** @return the value of eight ASCII digits, first digit in the lowest byte (fast_float's SWAR sum) */
+    private static long eightDigits(long v) {
+        v -= 0x3030303030303030L;
+        v = (v * 10) + (v >>> 8);
+        return (((v & 0x000000FF000000FFL) * (100 + (1_000_000L << 32)))
+                + (((v >>> 16) & 0x000000FF000000FFL) * (1 + (10_000L << 32)))) >>> 32;
+    }
+
+    /** @return the number found by the last successful {@link #scan} */
+    double value() {
+        return value;
+    }
+}

@@ -1,0 +1,132 @@
+package org.trajeval.core.io;
+
+import java.nio.file.Path;
+import java.util.Locale;
+import org.trajeval.core.InputException;
+import org.trajeval.core.InputProblem;
+import org.trajeval.core.traj.SpatialTrajectory;
+
+/**
+ * KITTI odometry poses: 12 numbers per line, the 3x4 matrix [R|t] row-major
+ * ({@code r11 r12 r13 tx r21 r22 r23 ty r31 r32 r33 tz}, t in m). The file has no stamps: pose
+ * i gets t = i s and {@link LoadedTrajectory#indexTimestamps()} is true, unless a times file
+ * (one time in s per line, as many lines as poses) gives real stamps. R must be a rotation
+ * within the tolerance (max |R^T R - I| and |det R - 1|; the KITTI ground truth, written with 7
+ * digits, is orthonormal to about 1e-6); it becomes a unit quaternion by Shepperd's method.
+ */
+final class KittiReader {
+    private static final String[] NAMES = {"r11", "r12", "r13", "tx", "r21", "r22", "r23", "ty", "r31", "r32", "r33",
+        "tz"};
+    private static final String[] UNITS = {"", "", "", "(m)", "", "", "", "(m)", "", "", "", "(m)"};
+    private static final String TIME_UNIT_REMEDY = "convert the times file to seconds (KITTI times are seconds)";
+
+    private KittiReader() {
+    }
+
+    static LoadedTrajectory read(Path path, String source, ReadOptions options, String reason) {
+        double[][] c;
+        String sha;
+        try (ByteLines lines = ByteLines.open(path, source, options.maxBytes())) {
+            NumericRows rows = new NumericRows(lines, source, NumericRows.WHITESPACE, false);
+            rows.select(new int[] {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}, NAMES, UNITS);
+            rows.requireFields(12, "r11 r12 r13 tx r21 r22 r23 ty r31 r32 r33 tz, separated by spaces");
+            PoseBuffer poses = new PoseBuffer(source, "index", 13, TimestampOrder.REFUSE_UNSORTED,
+                    DuplicateTimestamps.REFUSE, options.maxPoses());
+            double[] in = new double[12];
+            double[] r = new double[9];
+            double[] row = new double[13];
+            double tolerance = options.quaternionTolerance();
+            while (rows.next(in)) {
+                for (int i = 0; i < 3; i++) {
+                    r[3 * i] = in[4 * i];
+                    r[3 * i + 1] = in[4 * i + 1];
+                    r[3 * i + 2] = in[4 * i + 2];
+                }
+                double orthoError = RotationMatrix.orthonormalityError(r);
+                double det = RotationMatrix.determinant(r);
+                if (!(orthoError <= tolerance) || !(Math.abs(det - 1.0) <= tolerance)) {
+                    throw new InputException(source, rows.lineNumber(), "r11..r33", InputProblem.NOT_A_ROTATION,
+                            String.format(Locale.ROOT, "the 3x3 part (r11..r33) must be a rotation within %s "
+                                    + "(max |R^T R - I| = %.3g, det R = %.6g)", tolerance, orthoError, det),
+                            rows.lineText());
+                }
+                // the matrix is kept as read (as evo keeps it): KITTI files are orthonormal only to ~1e-6
+                row[0] = poses.size();
+                row[1] = in[3];
+                row[2] = in[7];
+                row[3] = in[11];
+                System.arraycopy(r, 0, row, 4, 9);
+                poses.add(row, rows.lineNumber());
+            }
+            c = poses.finish("only comment or blank lines");
+            sha = lines.finishSha256();
+        }
+        if (options.kittiTimes() == null) {
+            return new LoadedTrajectory(source, TrajectoryFormat.KITTI, reason, trajectory(c), sha, true);
+        }
+        double[][] timed = withTimes(c, source, options);
+        return new LoadedTrajectory(source, TrajectoryFormat.KITTI, reason + "; times from " + options.kittiTimes(),
+                trajectory(timed), sha, false);
+    }
+
+    /** Columns t, x, y, z, r00..r22 to a trajectory that keeps the matrices as read. */
+    private static SpatialTrajectory trajectory(double[][] c) {
+        int n = c[0].length;
+        double[] r = new double[9 * n];
+        for (int k = 0; k < 9; k++) {
+            double[] col = c[4 + k];
+            for (int i = 0; i < n; i++) {
+                r[9 * i + k] = col[i];
+            }
+        }
+        return SpatialTrajectory.ofMatrices(c[0], c[1], c[2], c[3], r);
+    }
+
+    /** Replaces the index stamps by the times file's, one line per pose, with the order policy. */
+    private static double[][] withTimes(double[][] c, String poseSource, ReadOptions options) {
+        Path timesPath = options.kittiTimes();
+        String source = timesPath.toString();
+        int n = c[0].length;
+        TrajectoryReader.checkFile(timesPath, source, options.maxBytes());
+        try (ByteLines lines = ByteLines.open(timesPath, source, options.maxBytes())) {
+            NumericRows rows = new NumericRows(lines, source, NumericRows.WHITESPACE, false);
+            rows.select(new int[] {0}, new String[] {"time"}, new String[] {"(s)"});
+            rows.requireFields(1, "one time in s per line");
+            PoseBuffer poses = new PoseBuffer(source, "time", c.length, options.order(), options.duplicates(),
+                    options.maxPoses());
+            double[] in = new double[1];
+            double[] row = new double[c.length];
+            int k = 0;
+            while (rows.next(in)) {
+                long line = rows.lineNumber();
+                if (k >= n) {
+                    throw countMismatch(source, line, poseSource, n, "this is time number " + (k + 1));
+                }
+                if (TimeUnitCheck.implausible(in[0])) {
+                    throw TimeUnitCheck.refuse(source, line, "time", in[0], TimeUnit.S, TIME_UNIT_REMEDY,
+                            rows.selectedText(0));
+                }
+                row[0] = in[0];
+                for (int col = 1; col < c.length; col++) {
+                    row[col] = c[col][k];
+                }
+                int code = poses.add(row, line);
+                if (code != PoseBuffer.ACCEPTED) {
+                    throw poses.orderProblem(code, row[0], line, rows.selectedText(0));
+                }
+                k++;
+            }
+            if (k < n) {
+                throw countMismatch(source, 0, poseSource, n, "it has only " + k);
+            }
+            return poses.finish("only comment or blank lines");
+        }
+    }
+
+    private static InputException countMismatch(String source, long line, String poseSource, int poses,
+            String found) {
+        return new InputException(source, line, "time", InputProblem.WRONG_FIELD_COUNT,
+                "the KITTI times file must have one time (s) per pose, " + poses + " for " + poseSource + "; " + found,
+                null);
+    }
+}

@@ -1,0 +1,346 @@
+package org.trajeval.core.io;
+
+import java.nio.charset.StandardCharsets;
+import org.trajeval.core.InputException;
+import org.trajeval.core.InputProblem;
+
+/**
+ * Splits the lines of a {@link ByteLines} into fields and parses the selected fields as numbers,
+ * in place and without allocating. Blank lines and lines whose first non-blank character is
+ * {@code #} are skipped. Fields are separated by one delimiter byte (surrounding spaces and tabs
+ * trimmed) or by runs of spaces and tabs ({@link #WHITESPACE}).
+ */
+final class NumericRows {
+    /** Delimiter value meaning "runs of spaces and tabs". */
+    static final byte WHITESPACE = 0;
+
+    private final ByteLines lines;
+    private final String source;
+    private final byte delimiter;
+    private final boolean quotesNeedCsv;
+    private int[] fieldStart = new int[32];
+    private int[] fieldEnd = new int[32];
+    private int count;
+
+    private final DecimalScanner scanner = new DecimalScanner();
+    private int[] select = new int[0];
+    private int[] slotOfField = new int[0];
+    private String[] names = new String[0];
+    private String[] units = new String[0];
+    private int exactFields = -1;
+    private int minFields;
+    private String layout = "";
+    private long countSetAtLine;
+
+    /**
+     * @param quotesNeedCsv when true a quote character anywhere in a line throws
+     *     {@link NeedsQuotedCsv} (the CSV reader then switches to Commons CSV)
+     */
+    NumericRows(ByteLines lines, String source, byte delimiter, boolean quotesNeedCsv) {
+        this.lines = lines;
+        this.source = source;
+        this.delimiter = delimiter;
+        this.quotesNeedCsv = quotesNeedCsv;
+    }
+
+    /**
+     * Chooses the fields to parse.
+     *
+     * @param fieldIndex 0-based field index of each selected column
+     * @param columnNames name of each selected column (for messages)
+     * @param columnUnits unit of each selected column, e.g. "(m)", or "" (for messages)
+     */
+    void select(int[] fieldIndex, String[] columnNames, String[] columnUnits) {
+        this.select = fieldIndex.clone();
+        this.names = columnNames.clone();
+        this.units = columnUnits.clone();
+        int max = -1;
+        for (int f : fieldIndex) {
+            max = Math.max(max, f);
+        }
+        this.slotOfField = new int[max + 1];
+        java.util.Arrays.fill(slotOfField, -1);
+        for (int k = 0; k < fieldIndex.length; k++) {
+            slotOfField[fieldIndex[k]] = k;
+        }
+    }
+
+    /** Every data line must have exactly {@code n} fields; {@code describe} says which, for messages. */
+    void requireFields(int n, String describe) {
+        this.exactFields = n;
+        this.layout = describe;
+    }
+
+    /** The first data line must have at least {@code n} fields, every later one as many as the first. */
+    void requireAtLeastFields(int n, String describe) {
+        this.exactFields = -1;
+        this.minFields = n;
+        this.layout = describe;
+    }
+
+    /**
+     * Advances to the next line that is neither blank nor a comment and splits it into fields.
+     *
+     * @return false at the end of the file
+     */
+    boolean nextContentLine() {
+        if (!nextDataLine()) {
+            return false;
+        }
+        split(lines.buffer(), lines.start(), lines.end());
+        return true;
+    }
+
+    private boolean nextDataLine() {
+        while (lines.next()) {
+            byte[] b = lines.buffer();
+            int to = lines.end();
+            int i = lines.start();
+            while (i < to && (b[i] == ' ' || b[i] == '\t')) {
+                i++;
+            }
+            if (i < to && b[i] != '#') {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * Reads the next data line into {@code row}: {@code row[k]} is the selected field {@code k}.
+     *
+     * @return false at the end of the file
+     * @throws InputException on a wrong field count, a field that is not a number, or a non-finite one
+     */
+    boolean next(double[] row) {
+        if (!nextDataLine()) {
+            return false;
+        }
+        if (exactFields < 0 || !parseInOnePass(row)) {
+            parseCarefully(row);
+        }
+        return true;
+    }
+
+    /**
+     * The fast path: one pass over the line, numbers scanned in place.
+     *
+     * @return false on anything unusual (wrong count, bad or non-finite number, quote); the
+     *     careful path then says what, or reads what this path does not
+     */
+    private boolean parseInOnePass(double[] row) {
+        final byte[] b = lines.buffer();
+        final int to = lines.end();
+        final int[] slots = slotOfField;
+        int p = lines.start();
+        int field = 0;
+        int parsed = 0;
+        if (delimiter == WHITESPACE) {
+            while (true) {
+                while (p < to && (b[p] == ' ' || b[p] == '\t')) {
+                    p++;
+                }
+                if (p >= to) {
+                    break;
+                }
+                int slot = field < slots.length ? slots[field] : -1;
+                if (slot >= 0) {
+                    int e = scanner.scan(b, p, to);
+                    if (e == p || (e < to && b[e] != ' ' && b[e] != '\t')) {
+                        return false;
+                    }
+                    double v = scanner.value();
+                    if (Double.isInfinite(v)) {
+                        return false;
+                    }
+                    row[slot] = v;
+                    parsed++;
+                    p = e;
+                } else {
+                    while (p < to && b[p] != ' ' && b[p] != '\t') {
+                        p++;
+                    }
+                }
+                field++;
+            }
+        } else {
+            final byte d = delimiter;
+            while (true) {
+                while (p < to && (b[p] == ' ' || b[p] == '\t')) {
+                    p++;
+                }
+                int e;
+                int slot = field < slots.length ? slots[field] : -1;
+                if (slot >= 0) {
+                    e = scanner.scan(b, p, to);
+                    if (e == p) {
+                        return false;
+                    }
+                    while (e < to && (b[e] == ' ' || b[e] == '\t')) {
+                        e++;
+                    }
+                    if (e < to && b[e] != d) {
+                        return false;
+                    }
+                    double v = scanner.value();
+                    if (Double.isInfinite(v)) {
+                        return false;
+                    }
+                    row[slot] = v;
+                    parsed++;
+                } else {
+                    e = p;
+                    while (e < to && b[e] != d) {
+                        if (b[e] == '"') {
+                            return false;
+                        }
+                        e++;
+                    }
+                }
+                field++;
+                if (e >= to) {
+                    break;
+                }
+                p = e + 1;
+            }
+        }
+        return field == exactFields && parsed == select.length;
+    }
+
+    /** The careful path: split, check the count, check each selected field; throws on a problem. */
+    private void parseCarefully(double[] row) {
+        final byte[] b = lines.buffer();
+        split(b, lines.start(), lines.end());
+        checkCount();
+        for (int k = 0; k < select.length; k++) {
+            int f = select[k];
+            int s = fieldStart[f];
+            int e = fieldEnd[f];
+            if (scanner.scan(b, s, e) != e || s == e || Double.isInfinite(scanner.value())) {
+                throw badNumber(k, text(s, e));
+            }
+            row[k] = scanner.value();
+        }
+    }
+
+    private void checkCount() {
+        if (exactFields < 0) {
+            if (count < minFields) {
+                throw wrongCount("at least " + minFields);
+            }
+            exactFields = count;
+            countSetAtLine = lines.lineNumber();
+            return;
+        }
+        if (count != exactFields) {
+            throw wrongCount(countSetAtLine > 0 ? exactFields + " (as line " + countSetAtLine + ")"
+                    : String.valueOf(exactFields));
+        }
+    }
+
+    private InputException wrongCount(String expected) {
+        return new InputException(source, lines.lineNumber(), null, InputProblem.WRONG_FIELD_COUNT,
+                "a line must have " + expected + " fields (" + layout + "), this one has " + count,
+                lines.lineText());
+    }
+
+    private InputException badNumber(int k, String found) {
+        boolean nonFinite = DecimalText.spellsNonFinite(found) || DecimalText.isDecimal(found);
+        String unit = units[k].isEmpty() ? "" : " " + units[k];
+        return new InputException(source, lines.lineNumber(), names[k],
+                nonFinite ? InputProblem.NOT_FINITE : InputProblem.NOT_A_NUMBER,
+                "column '" + names[k] + "' must be a " + (nonFinite ? "finite number" : "number") + unit, found);
+    }
+
+    private void split(byte[] b, int from, int to) {
+        count = 0;
+        if (delimiter == WHITESPACE) {
+            int i = from;
+            while (true) {
+                while (i < to && (b[i] == ' ' || b[i] == '\t')) {
+                    i++;
+                }
+                if (i >= to) {
+                    break;
+                }
+                int s = i;
+                while (i < to && b[i] != ' ' && b[i] != '\t') {
+                    i++;
+                }
+                add(s, i);
+            }
+            return;
+        }
+        final byte d = delimiter;
+        int s = from;
+        if (quotesNeedCsv) {
+            for (int i = from; i < to; i++) {
+                byte c = b[i];
+                if (c == d) {
+                    addTrimmed(b, s, i);
+                    s = i + 1;
+                } else if (c == '"') {
+                    throw new NeedsQuotedCsv();
+                }
+            }
+        } else {
+            for (int i = from; i < to; i++) {
+                if (b[i] == d) {
+                    addTrimmed(b, s, i);
+                    s = i + 1;
+                }
+            }
+        }
+        addTrimmed(b, s, to);
+    }
+
+    private void addTrimmed(byte[] b, int s, int e) {
+        while (s < e && (b[s] == ' ' || b[s] == '\t')) {
+            s++;
+        }
+        while (e > s && (b[e - 1] == ' ' || b[e - 1] == '\t')) {
+            e--;
+        }
+        add(s, e);
+    }
+
+    private void add(int s, int e) {
+        if (count == fieldStart.length) {
+            fieldStart = java.util.Arrays.copyOf(fieldStart, count * 2);
+            fieldEnd = java.util.Arrays.copyOf(fieldEnd, count * 2);
+        }
+        fieldStart[count] = s;
+        fieldEnd[count] = e;
+        count++;
+    }
+
+    /** @return number of fields of the current line */
+    int fieldCount() {
+        return count;
+    }
+
+    /** @return field {@code i} of the current line as text (for headers and messages) */
+    String field(int i) {
+        return text(fieldStart[i], fieldEnd[i]);
+    }
+
+    /** @return the selected field {@code k} of the current line as text (for messages; splits the line again) */
+    String selectedText(int k) {
+        split(lines.buffer(), lines.start(), lines.end());
+        return select[k] < count ? field(select[k]) : "";
+    }
+
+    private String text(int s, int e) {
+        return new String(lines.buffer(), s, e - s, StandardCharsets.UTF_8);
+    }
+
+    /** @return 1-based line number of the current line */
+    long lineNumber() {
+        return lines.lineNumber();
+    }
+
+    /** @return the current line as text (for messages) */
+    String lineText() {
+        return lines.lineText();
+    }
+}

@@ -1,0 +1,200 @@
+package org.trajeval.core.io;
+
+import java.util.Arrays;
+import org.trajeval.core.InputException;
+import org.trajeval.core.InputProblem;
+
+/**
+ * Growing primitive columns of poses (column 0 is the timestamp in s) with the timestamp-order
+ * policy: with {@link TimestampOrder#REFUSE_UNSORTED} each timestamp is checked against the one
+ * before as it is added; with {@link TimestampOrder#SORT} the poses are sorted stably by time at
+ * the end and any two equal timestamps are refused, naming both lines.
+ */
+final class PoseBuffer {
+    /** {@link #add} result: the pose was taken. */
+    static final int ACCEPTED = 0;
+    /** {@link #add} result: the timestamp is smaller than the one before (nothing was added). */
+    static final int DECREASING = 1;
+    /** {@link #add} result: the timestamp equals the one before (nothing was added). */
+    static final int DUPLICATE = 2;
+
+    private static final int INITIAL_CAPACITY = 1024;
+
+    private final String source;
+    private final String timeColumn;
+    private final TimestampOrder order;
+    private final boolean keepDuplicates;
+    private final long maxPoses;
+    private final double[][] columns;
+    private long[] lines;
+    private int n;
+    private double lastT = Double.NaN;
+    private long lastLine;
+
+    /**
+     * @param source file name for messages
+     * @param timeColumn name of the time column for messages
+     * @param columnCount number of columns, the time included
+     */
+    PoseBuffer(String source, String timeColumn, int columnCount, TimestampOrder order,
+            DuplicateTimestamps duplicates, long maxPoses) {
+        this.keepDuplicates = duplicates == DuplicateTimestamps.KEEP;
+        this.source = source;
+        this.timeColumn = timeColumn;
+        this.order = order;
+        this.maxPoses = Math.min(maxPoses, Integer.MAX_VALUE - 8);
+        this.columns = new double[columnCount][INITIAL_CAPACITY];
+        this.lines = order == TimestampOrder.SORT ? new long[INITIAL_CAPACITY] : null;
+    }
+
+    /**
+     * Appends one pose; {@code row[0]} is its time (s), {@code row[c]} the value of column c.
+     *
+     * @return {@link #ACCEPTED}, or (only when refusing unsorted input) {@link #DECREASING} or
+     *     {@link #DUPLICATE}, in which case {@link #orderProblem} builds the refusal
+     * @throws InputException when the pose limit is exceeded
+     */
+    int add(double[] row, long line) {
+        double t = row[0];
+        if (lines == null && n > 0 && !(t > lastT) && !(t == lastT && keepDuplicates)) {
+            return t < lastT ? DECREASING : DUPLICATE;
+        }
+        if (n == columns[0].length || n >= maxPoses) {
+            grow(line);
+        }
+        final int i = n;
+        for (int c = 0; c < columns.length; c++) {
+            columns[c][i] = row[c];
+        }
+        if (lines != null) {
+            lines[i] = line;
+        }
+        n = i + 1;
+        lastT = t;
+        lastLine = line;
+        return ACCEPTED;
+    }
+
+    private void grow(long line) {
+        if (n >= maxPoses) {
+            throw FileProblems.tooManyPoses(source, line, maxPoses);
+        }
+        int capacity = (int) Math.min((long) n * 2, maxPoses);
+        for (int c = 0; c < columns.length; c++) {
+            columns[c] = Arrays.copyOf(columns[c], capacity);
+        }
+        if (lines != null) {
+            lines = Arrays.copyOf(lines, capacity);
+        }
+    }
+
+    /** @return number of poses so far */
+    int size() {
+        return n;
+    }
+
+    /** @return value of column {@code c} of pose {@code i} */
+    double get(int c, int i) {
+        return columns[c][i];
+    }
+
+    /**
+     * The refusal for an {@link #add} result other than {@link #ACCEPTED}.
+     *
+     * @param found the timestamp as written in the file
+     */
+    InputException orderProblem(int code, double t, long line, String found) {
+        if (code == DECREASING) {
+            return new InputException(source, line, timeColumn, InputProblem.DECREASING_TIMESTAMP,
+                    "column '" + timeColumn + "' must be after line " + lastLine + " (" + lastT
+                            + " s): timestamps must increase. Sort the file, or pass --sort",
+                    found);
+        }
+        return duplicate(lastLine, line, t, found);
+    }
+
+    private InputException duplicate(long firstLine, long line, double t, String found) {
+        return new InputException(source, line, timeColumn, InputProblem.DUPLICATE_TIMESTAMP,
+                "column '" + timeColumn + "' repeats the timestamp of line " + firstLine + " (" + t
+                        + " s): timestamps must be unique (--sort does not remove duplicates)",
+                found);
+    }
+
+    /**
+     * Ends the reading: refuses an empty buffer, sorts when asked (refusing duplicates) and
+     * returns the columns trimmed to the pose count.
+     *
+     * @param emptyWhat what the file held instead of poses, for the EMPTY message
+     */
+    double[][] finish(String emptyWhat) {
+        if (n == 0) {
+            throw FileProblems.empty(source, emptyWhat);
+        }
+        double[][] out = new double[columns.length][];
+        if (lines != null && !strictlyIncreasing(columns[0], n)) {
+            int[] perm = stableOrder(columns[0], n);
+            for (int c = 0; c < columns.length; c++) {
+                double[] src = columns[c];
+                double[] dst = new double[n];
+                for (int i = 0; i < n; i++) {
+                    dst[i] = src[perm[i]];
+                }
+                out[c] = dst;
+            }
+            double[] t = out[0];
+            for (int i = 1; i < n && !keepDuplicates; i++) {
+                if (t[i] == t[i - 1]) {
+                    long a = lines[perm[i - 1]];
+                    long b = lines[perm[i]];
+                    throw duplicate(Math.min(a, b), Math.max(a, b), t[i], Double.toString(t[i]));
+                }
+            }
+            return out;
+        }
+        for (int c = 0; c < columns.length; c++) {
+            out[c] = columns[c].length == n ? columns[c] : Arrays.copyOf(columns[c], n);
+        }
+        return out;
+    }
+
+    private static boolean strictlyIncreasing(double[] t, int n) {
+        for (int i = 1; i < n; i++) {
+            if (!(t[i] > t[i - 1])) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** @return indices 0..n-1 ordered by key, equal keys in their original order (bottom-up merge sort) */
+    static int[] stableOrder(double[] key, int n) {
+        int[] a = new int[n];
+        for (int i = 0; i < n; i++) {
+            a[i] = i;
+        }
+        int[] b = new int[n];
+        for (int width = 1; width < n; width *= 2) {
+            for (int lo = 0; lo < n; lo += 2 * width) {
+                int mid = Math.min(lo + width, n);
+                int hi = Math.min(lo + 2 * width, n);
+                int i = lo;
+                int j = mid;
+                int k = lo;
+                while (i < mid && j < hi) {
+                    // take from the right only when strictly smaller: keeps equal keys in order
+                    b[k++] = key[a[j]] < key[a[i]] ? a[j++] : a[i++];
+                }
+                while (i < mid) {
+                    b[k++] = a[i++];
+                }
+                while (j < hi) {
+                    b[k++] = a[j++];
+                }
+            }
+            int[] swap = a;
+            a = b;
+            b = swap;
+        }
+        return a;
+    }
+}
