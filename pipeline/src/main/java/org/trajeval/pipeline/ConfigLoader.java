@@ -83,7 +83,7 @@ public final class ConfigLoader {
     }
 
     private static void merge(ObjectNode into, ObjectNode from, String prefix, String source) {
-        for (Iterator<Map.Entry<String, JsonNode>> it = from.fields(); it.hasNext(); ) {
+        for (Iterator<Map.Entry<String, JsonNode>> it = from.properties().iterator(); it.hasNext(); ) {
             Map.Entry<String, JsonNode> f = it.next();
             JsonNode existing = into.get(f.getKey());
             if (existing == null) {
@@ -107,7 +107,7 @@ public final class ConfigLoader {
 
     private static List<String> leafKeys(ObjectNode n, String prefix) {
         List<String> keys = new ArrayList<>();
-        n.fields().forEachRemaining(f -> {
+        n.properties().forEach(f -> {
             if (f.getValue().isObject()) {
                 keys.addAll(leafKeys((ObjectNode) f.getValue(), prefix + f.getKey() + "."));
             } else {

@@ -33,6 +33,7 @@ public enum LogFormat {
         root.detachAndStopAllAppenders();
         JsonEncoder encoder = new JsonEncoder();
         encoder.setContext(ctx);
+        encoder.setWithFormattedMessage(true);
         encoder.start();
         ConsoleAppender<ILoggingEvent> appender = new ConsoleAppender<>();
         appender.setContext(ctx);

@@ -28,7 +28,8 @@ import picocli.CommandLine.Option;
  */
 @Command(name = "trajeval-pipeline", mixinStandardHelpOptions = true, versionProvider = PipelineCommand.VersionProvider.class,
         description = "Turns finished robot runs into metric reports, from a folder or from Kafka.",
-        subcommands = {PipelineCommand.Watch.class, PipelineCommand.KafkaCmd.class, PipelineCommand.Broker.class},
+        subcommands = {PipelineCommand.Watch.class, PipelineCommand.KafkaCmd.class, PipelineCommand.Broker.class,
+            PipelineCommand.Send.class, PipelineCommand.Tail.class},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success (watch --drain: every bundle succeeded)", "1:internal error",
             "2:bad configuration or usage", "4:watch --drain: some bundles were put in failed/"})
@@ -231,6 +232,56 @@ public final class PipelineCommand implements Runnable {
         @Override
         public Integer call() throws InterruptedException {
             return org.trajeval.pipeline.kafka.KafkaMode.runBroker(data, port, topics, spec.commandLine().getOut());
+        }
+    }
+
+    /** {@code send}: publishes run event files to the input topic (local trials). */
+    @Command(name = "send", mixinStandardHelpOptions = true,
+            description = "Publishes run events (a JSON file each, or .jsonl with one per line), keyed by robot_id.")
+    static final class Send implements Callable<Integer> {
+        @CommandLine.Spec
+        CommandLine.Model.CommandSpec spec;
+
+        @Option(names = "--bootstrap-servers", paramLabel = "HOST:PORT", defaultValue = "127.0.0.1:9092",
+                description = "Kafka cluster (default: ${DEFAULT-VALUE}).")
+        String bootstrap;
+
+        @Option(names = "--topic", defaultValue = "trajeval.runs", description = "Topic (default: ${DEFAULT-VALUE}).")
+        String topic;
+
+        @CommandLine.Parameters(paramLabel = "FILE", arity = "1..*", description = "Event files.")
+        java.util.List<Path> files;
+
+        @Override
+        public Integer call() {
+            int n = org.trajeval.pipeline.kafka.KafkaMode.send(bootstrap, topic, files);
+            spec.commandLine().getOut().println("sent " + n + " event(s) to " + topic);
+            spec.commandLine().getOut().flush();
+            return 0;
+        }
+    }
+
+    /** {@code tail}: prints a topic's committed records (report events, dead letters). */
+    @Command(name = "tail", mixinStandardHelpOptions = true,
+            description = "Prints the committed records of a topic from its beginning for a few seconds.")
+    static final class Tail implements Callable<Integer> {
+        @CommandLine.Spec
+        CommandLine.Model.CommandSpec spec;
+
+        @Option(names = "--bootstrap-servers", paramLabel = "HOST:PORT", defaultValue = "127.0.0.1:9092",
+                description = "Kafka cluster (default: ${DEFAULT-VALUE}).")
+        String bootstrap;
+
+        @Option(names = "--topic", defaultValue = "trajeval.reports", description = "Topic (default: ${DEFAULT-VALUE}).")
+        String topic;
+
+        @Option(names = "--seconds", defaultValue = "5", description = "How long to read (default: ${DEFAULT-VALUE} s).")
+        int seconds;
+
+        @Override
+        public Integer call() {
+            org.trajeval.pipeline.kafka.KafkaMode.tail(bootstrap, topic, seconds, spec.commandLine().getOut());
+            return 0;
         }
     }
 

@@ -1,6 +1,21 @@
 package org.trajeval.pipeline.kafka;
 
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.IOException;
 import java.io.PrintWriter;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.time.Duration;
+import java.util.Properties;
+import org.apache.kafka.clients.consumer.ConsumerRecord;
+import org.apache.kafka.clients.consumer.KafkaConsumer;
+import org.apache.kafka.clients.producer.KafkaProducer;
+import org.apache.kafka.clients.producer.ProducerRecord;
+import org.apache.kafka.common.TopicPartition;
+import org.apache.kafka.common.serialization.StringDeserializer;
+import org.apache.kafka.common.serialization.StringSerializer;
 import java.lang.management.ManagementFactory;
 import java.net.InetAddress;
 import java.net.UnknownHostException;
@@ -98,6 +113,67 @@ public final class KafkaMode {
         out.flush();
         stop.await();
         return 0;
+    }
+
+    /**
+     * Publishes run events (one JSON object per file, or per line of a .jsonl file), keyed by robot id.
+     *
+     * @return the number of events sent
+     */
+    public static int send(String bootstrap, String topic, List<Path> files) {
+        Properties pp = new Properties();
+        pp.put("bootstrap.servers", bootstrap);
+        pp.put("acks", "all");
+        ObjectMapper json = new ObjectMapper();
+        int n = 0;
+        try (KafkaProducer<String, String> p = new KafkaProducer<>(pp, new StringSerializer(), new StringSerializer())) {
+            for (Path f : files) {
+                List<String> values = f.toString().endsWith(".jsonl")
+                        ? Files.readAllLines(f).stream().filter(l -> !l.isBlank()).toList() : List.of(Files.readString(f));
+                for (String v : values) {
+                    String key = null;
+                    try {
+                        JsonNode node = json.readTree(v);
+                        key = node != null && node.hasNonNull("robot_id") ? node.get("robot_id").asText() : null;
+                    } catch (JsonProcessingException e) {
+                        // sent as is: the service puts it in the dead-letter topic with the reason
+                    }
+                    p.send(new ProducerRecord<>(topic, key, v)).get(30, TimeUnit.SECONDS);
+                    n++;
+                }
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("interrupted", e);
+        } catch (ExecutionException | java.util.concurrent.TimeoutException e) {
+            throw new IllegalStateException("could not send to " + bootstrap + ": " + e, e);
+        }
+        return n;
+    }
+
+    /** Prints the committed records of a topic from its beginning, one value per line, for {@code seconds}. */
+    public static int tail(String bootstrap, String topic, int seconds, PrintWriter out) {
+        Properties cp = new Properties();
+        cp.put("bootstrap.servers", bootstrap);
+        cp.put("isolation.level", "read_committed");
+        int n = 0;
+        try (KafkaConsumer<String, String> c = new KafkaConsumer<>(cp, new StringDeserializer(), new StringDeserializer())) {
+            List<TopicPartition> tps = c.partitionsFor(topic).stream().map(pi -> new TopicPartition(topic, pi.partition()))
+                    .toList();
+            c.assign(tps);
+            c.seekToBeginning(tps);
+            long end = System.nanoTime() + seconds * 1_000_000_000L;
+            while (System.nanoTime() < end) {
+                for (ConsumerRecord<String, String> r : c.poll(Duration.ofMillis(200))) {
+                    out.println(r.value());
+                    n++;
+                }
+                out.flush();
+            }
+        }
+        return n;
     }
 
     /** Creates topics that do not exist yet. */
