@@ -84,7 +84,19 @@ class SortingTest {
         assertEquals(InputProblem.DUPLICATE_TIMESTAMP, e.problem());
         assertEquals(5, e.line());
         assertEquals(file + ":5: column 't' repeats the timestamp of line 3 (0.2 s): timestamps must be unique"
-                + " (--sort does not remove duplicates), found \"0.2\"", e.getMessage());
+                + " (--sort does not remove duplicates; --duplicates keep keeps both poses, as evo does), found \"0.2\"",
+                e.getMessage());
+    }
+
+    @Test
+    void keptDuplicatesStayInFileOrderWhenSorted(@TempDir Path dir) throws IOException {
+        // lines 2..5: t = 0.5, 0.2, 0.9, 0.2 with x = 1, 2, 3, 4 -> sorted x = 2, 4, 1, 3
+        Path file = write(dir.resolve("dup.csv"), "t,x,y,yaw", List.of("0.5,1,0,0", "0.2,2,0,0", "0.9,3,0,0",
+                "0.2,4,0,0"));
+        PlanarTrajectory t = (PlanarTrajectory) TrajectoryReader.read(file,
+                SORT.withDuplicates(DuplicateTimestamps.KEEP)).trajectory();
+        assertArrayEquals(new double[] {0.2, 0.2, 0.5, 0.9}, t.timestamps());
+        assertArrayEquals(new double[] {2, 4, 1, 3}, t.xs());
     }
 
     private static Path write(Path p, String header, List<String> rows) throws IOException {
