@@ -12,8 +12,9 @@ public final class TestScorers {
 
     /** @return whether the core readers and engine are implemented (probed on a small pair) */
     public static boolean coreAvailable() {
+        Path dir = null;
         try {
-            Path dir = Files.createTempDirectory("trajeval-probe");
+            dir = Files.createTempDirectory("trajeval-probe");
             Fixtures.writeTrajectory(dir.resolve("a.csv"), 50, 0.0, 1);
             Fixtures.writeTrajectory(dir.resolve("b.csv"), 50, 0.05, 2);
             new CoreRunScorer(1 << 20).score(new RunJob(RunMetadata.ofName("probe"), dir.resolve("a.csv"),
@@ -23,6 +24,14 @@ public final class TestScorers {
             return false;
         } catch (IOException e) {
             throw new UncheckedIOException(e);
+        } finally {
+            try {
+                if (dir != null) {
+                    Fixtures.deleteTree(dir);
+                }
+            } catch (IOException ignored) {
+                // a temporary folder
+            }
         }
     }
 
