@@ -28,19 +28,38 @@ public final class ReferenceSampling {
     public static double maxAcceleration(Trajectory ref, int from, int to) {
         int lo = Math.max(from, 1);
         int hi = Math.min(to, ref.size() - 2);
-        double aMax = 0.0;
-        for (int k = lo; k <= hi; k++) {
-            double h0 = ref.t(k) - ref.t(k - 1);
-            double h1 = ref.t(k + 1) - ref.t(k);
-            if (!(h0 > 0.0) || !(h1 > 0.0)) {
-                continue; // a duplicate stamp (kept on request) says nothing about acceleration
-            }
-            double w = 2.0 / (h0 + h1);
-            double ax = w * ((ref.x(k + 1) - ref.x(k)) / h1 - (ref.x(k) - ref.x(k - 1)) / h0);
-            double ay = w * ((ref.y(k + 1) - ref.y(k)) / h1 - (ref.y(k) - ref.y(k - 1)) / h0);
-            double az = w * ((ref.z(k + 1) - ref.z(k)) / h1 - (ref.z(k) - ref.z(k - 1)) / h0);
-            aMax = Math.max(aMax, Math.sqrt(ax * ax + ay * ay + az * az));
+        double aMax2 = 0.0;
+        if (lo > hi) {
+            return 0.0;
         }
-        return aMax;
+        double t0 = ref.t(lo - 1);
+        double t1 = ref.t(lo);
+        double vx0 = ref.x(lo) - ref.x(lo - 1);
+        double vy0 = ref.y(lo) - ref.y(lo - 1);
+        double vz0 = ref.z(lo) - ref.z(lo - 1);
+        double h0 = t1 - t0;
+        for (int k = lo; k <= hi; k++) {
+            double t2 = ref.t(k + 1);
+            double h1 = t2 - t1;
+            double dx = ref.x(k + 1) - ref.x(k);
+            double dy = ref.y(k + 1) - ref.y(k);
+            double dz = ref.z(k + 1) - ref.z(k);
+            if (h0 > 0.0 && h1 > 0.0) {
+                // a duplicate stamp (kept on request) says nothing about acceleration: skipped
+                double inv0 = 1.0 / h0;
+                double inv1 = 1.0 / h1;
+                double w = 2.0 / (h0 + h1);
+                double ax = w * (dx * inv1 - vx0 * inv0);
+                double ay = w * (dy * inv1 - vy0 * inv0);
+                double az = w * (dz * inv1 - vz0 * inv0);
+                aMax2 = Math.max(aMax2, ax * ax + ay * ay + az * az);
+            }
+            t1 = t2;
+            h0 = h1;
+            vx0 = dx;
+            vy0 = dy;
+            vz0 = dz;
+        }
+        return Math.sqrt(aMax2);
     }
 }

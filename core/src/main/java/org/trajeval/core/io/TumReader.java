@@ -28,35 +28,47 @@ final class TumReader {
             double[] in = new double[8];
             double[] row = new double[8];
             double tolerance = options.quaternionTolerance();
-            while (rows.next(in)) {
-                long line = rows.lineNumber();
-                if (TimeUnitCheck.implausible(in[0])) {
-                    throw TimeUnitCheck.refuse(source, line, "t", in[0], TimeUnit.S, TIME_UNIT_REMEDY,
-                            rows.selectedText(0));
-                }
-                // file order qx qy qz qw -> stored order qw qx qy qz
-                if (!(QuaternionCheck.normError(in[7], in[4], in[5], in[6]) <= tolerance)) {
-                    throw QuaternionCheck.refuse(source, line, "qx qy qz qw", in[7], in[4], in[5], in[6], tolerance,
-                            rows.selectedText(4) + " " + rows.selectedText(5) + " " + rows.selectedText(6) + " "
-                                    + rows.selectedText(7));
-                }
-                row[0] = in[0];
-                row[1] = in[1];
-                row[2] = in[2];
-                row[3] = in[3];
-                row[4] = in[7];
-                row[5] = in[4];
-                row[6] = in[5];
-                row[7] = in[6];
-                int code = poses.add(row, line);
-                if (code != PoseBuffer.ACCEPTED) {
-                    throw poses.orderProblem(code, row[0], line, rows.selectedText(0));
-                }
+            while (readBatch(rows, poses, in, row, tolerance, source)) {
+                // batches: compiled early as a whole method (see CsvTrajectoryReader.readBatch)
             }
             double[][] c = poses.finish("it holds only comment or blank lines");
             String sha = lines.finishSha256();
             return new LoadedTrajectory(source, TrajectoryFormat.TUM, reason,
                     SpatialTrajectory.of(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]), sha, false);
         }
+    }
+
+    /** Reads up to 4096 poses; @return false at the end of the file. */
+    private static boolean readBatch(NumericRows rows, PoseBuffer poses, double[] in, double[] row, double tolerance,
+            String source) {
+        for (int k = 0; k < 4096; k++) {
+            if (!rows.next(in)) {
+                return false;
+            }
+            long line = rows.lineNumber();
+            if (TimeUnitCheck.implausible(in[0])) {
+                throw TimeUnitCheck.refuse(source, line, "t", in[0], TimeUnit.S, TIME_UNIT_REMEDY,
+                        rows.selectedText(0));
+            }
+            // file order qx qy qz qw -> stored order qw qx qy qz
+            if (!(QuaternionCheck.normError(in[7], in[4], in[5], in[6]) <= tolerance)) {
+                throw QuaternionCheck.refuse(source, line, "qx qy qz qw", in[7], in[4], in[5], in[6], tolerance,
+                        rows.selectedText(4) + " " + rows.selectedText(5) + " " + rows.selectedText(6) + " "
+                                + rows.selectedText(7));
+            }
+            row[0] = in[0];
+            row[1] = in[1];
+            row[2] = in[2];
+            row[3] = in[3];
+            row[4] = in[7];
+            row[5] = in[4];
+            row[6] = in[5];
+            row[7] = in[6];
+            int code = poses.add(row, line);
+            if (code != PoseBuffer.ACCEPTED) {
+                throw poses.orderProblem(code, row[0], line, rows.selectedText(0));
+            }
+        }
+        return true;
     }
 }

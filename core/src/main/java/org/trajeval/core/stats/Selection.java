@@ -26,11 +26,60 @@ final class Selection {
             return medianBySwapping(a, n);
         }
         int k = n / 2;
-        double upper = radixSelect(a, n, k);
-        if (n % 2 == 1) {
-            return upper;
+        double[] pair = radixSelectWithPredecessor(a, n, k);
+        return n % 2 == 1 ? pair[1] : 0.5 * (pair[0] + pair[1]);
+    }
+
+    /**
+     * {k-1-th, k-th} smallest (0-based, k >= 1) of non-negative values in one radix descent: the
+     * predecessor is usually among the last candidates; otherwise it is the largest value below
+     * them (one more pass).
+     */
+    static double[] radixSelectWithPredecessor(double[] a, int n, int k) {
+        long prefix = 0L;
+        int shift = 64;
+        int rank = k;
+        int candidates = n;
+        int[] count = new int[BUCKETS];
+        while (candidates > SMALL && shift > 0) {
+            shift -= RADIX_BITS;
+            java.util.Arrays.fill(count, 0);
+            long mask = shift + RADIX_BITS >= 64 ? 0L : (-1L << (shift + RADIX_BITS));
+            for (int i = 0; i < n; i++) {
+                long bits = Double.doubleToRawLongBits(a[i]);
+                if ((bits & mask) == prefix) {
+                    count[(int) ((bits >>> shift) & (BUCKETS - 1))]++;
+                }
+            }
+            int digit = 0;
+            while (rank >= count[digit]) {
+                rank -= count[digit];
+                digit++;
+            }
+            prefix |= ((long) digit) << shift;
+            candidates = count[digit];
         }
-        return 0.5 * (radixSelect(a, n, k - 1) + upper);
+        long mask = shift >= 64 ? 0L : (-1L << shift);
+        double[] rest = new double[candidates];
+        int m = 0;
+        for (int i = 0; i < n && m < candidates; i++) {
+            if ((Double.doubleToRawLongBits(a[i]) & mask) == prefix) {
+                rest[m++] = a[i];
+            }
+        }
+        java.util.Arrays.sort(rest, 0, m);
+        double kth = rest[rank];
+        if (rank > 0) {
+            return new double[] {rest[rank - 1], kth};
+        }
+        // the predecessor lies below the candidates' range: the largest value with smaller bits
+        double below = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < n; i++) {
+            if ((Double.doubleToRawLongBits(a[i]) & mask) < prefix) {
+                below = Math.max(below, a[i]);
+            }
+        }
+        return new double[] {below, kth};
     }
 
     /**
