@@ -139,7 +139,8 @@ public final class EvalCommand implements Callable<Integer> {
         LoadedTrajectory est = pair[1];
         EvaluationOptions options = options(ref, est);
         EvaluationReport report = Evaluator.evaluate(ref, est, options);
-        String jsonText = ReportJson.toJson(report);
+        // JSON (and Jackson's start-up) only when asked for
+        String jsonText = json || out != null ? ReportJson.toJson(report) : null;
         if (out != null) {
             ReportJson.writeAtomically(out, jsonText + "\n");
         }
