@@ -85,6 +85,7 @@ def evaluate(ref_path, est_path, delta):
     rpe_rot = np.abs(wrap(dthe - dthg))
     return {
         "association": {"matched": int(n), "dropped": dropped},
+        "max_abs_coordinate_m": float(max(np.max(np.abs(xr)), np.max(np.abs(yr)), np.max(np.abs(xe)), np.max(np.abs(ye)))),
         "alignment": {"theta_rad": float(theta), "translation_m": [float(tx), float(ty)]},
         "ate": {"trans_m": stats(ate_trans), "rot_rad": stats(ate_rot)},
         "rpe": {"trans_m": stats(rpe_trans), "rot_rad": stats(rpe_rot), "pairs": int(i.size)},
