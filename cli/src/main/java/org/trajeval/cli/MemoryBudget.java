@@ -29,11 +29,15 @@ final class MemoryBudget {
         long need = poses * (planar ? PLANAR_BYTES_PER_POSE : SPATIAL_BYTES_PER_POSE);
         if (need > maxHeapBytes) {
             throw new InputException(estimate.toString(), 0, null, InputProblem.TOO_LARGE, String.format(Locale.ROOT,
-                    "the pair holds about %,d poses and needs about %.1f GiB of memory, but the JVM may use %.1f GiB;"
+                    "the pair holds about %,d poses and needs about %s of memory, but the JVM may use %s;"
                             + " raise the heap (e.g. TRAJEVAL_OPTS=-Xmx%dg) or split the run into shorter spans",
-                    poses, need / 1073741824.0, maxHeapBytes / 1073741824.0,
-                    (long) Math.ceil(need * 1.2 / 1073741824.0)), null);
+                    poses, size(need), size(maxHeapBytes), (long) Math.ceil(need * 1.2 / 1073741824.0)), null);
         }
+    }
+
+    private static String size(long bytes) {
+        return bytes >= (1L << 30) ? String.format(Locale.ROOT, "%.1f GiB", bytes / 1073741824.0)
+                : String.format(Locale.ROOT, "%.1f MiB", bytes / 1048576.0);
     }
 
     private static boolean isCsv(Path p) {

@@ -38,17 +38,21 @@ final class ByteLines implements Closeable {
     private int start;
     private int end;
 
-    private ByteLines(String source, InputStream in, long maxBytes) {
+    private final long expectedBytes;
+
+    private ByteLines(String source, InputStream in, long maxBytes, long expectedBytes) {
         this.source = source;
         this.in = in;
         this.maxBytes = maxBytes;
+        this.expectedBytes = expectedBytes;
         this.sha = sha256();
     }
 
     /** Opens a file; refuses a missing or unreadable one as {@link InputProblem#UNREADABLE}. */
     static ByteLines open(Path path, String source, long maxBytes) {
         try {
-            return new ByteLines(source, Files.newInputStream(path), maxBytes);
+            long size = Files.isRegularFile(path) ? Files.size(path) : 0;
+            return new ByteLines(source, Files.newInputStream(path), maxBytes, size);
         } catch (IOException | SecurityException e) {
             throw FileProblems.unreadable(source, e);
         }
@@ -183,6 +187,16 @@ final class ByteLines implements Closeable {
     /** @return 1-based number of the current line */
     long lineNumber() {
         return lineNumber;
+    }
+
+    /** @return the file size when it was opened (bytes), 0 if unknown */
+    long expectedBytes() {
+        return expectedBytes;
+    }
+
+    /** @return bytes of the file up to the end of the current line */
+    long consumedBytes() {
+        return bytesRead - (limit - pos);
     }
 
     /** @return the current line as text (for messages only) */

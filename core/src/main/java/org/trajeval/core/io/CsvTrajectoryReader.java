@@ -39,7 +39,7 @@ final class CsvTrajectoryReader {
         try (ByteLines lines = ByteLines.open(path, source, options.maxBytes())) {
             NumericRows rows = new NumericRows(lines, source, (byte) layout.delimiter(), true);
             if (!rows.nextContentLine()) {
-                throw FileProblems.empty(source, "and it has no header line either (expected "
+                throw FileProblems.empty(source, "it has not even a header line (expected "
                         + String.join(String.valueOf(layout.delimiter()), layout.timeColumn(), layout.xColumn(),
                                 layout.yColumn(), layout.yawColumn()) + ")");
             }
@@ -50,7 +50,9 @@ final class CsvTrajectoryReader {
             CsvColumns columns = CsvColumns.locate(header, layout, source, rows.lineNumber());
             rows.select(columns.index(), columns.names(), columns.units());
             rows.requireFields(columns.fieldCount(), CsvColumns.describe(header, layout.delimiter()));
-            PoseBuffer poses = new PoseBuffer(source, layout.timeColumn(), 4, options.order(), options.duplicates(), options.maxPoses());
+            PoseBuffer poses = new PoseBuffer(source, layout.timeColumn(), 4, options.order(),
+                    options.duplicates(), options.maxPoses());
+            poses.sizeFrom(lines);
             TimeUnit unit = layout.timeUnit();
             double[] row = new double[4];
             while (rows.next(row)) {
@@ -65,7 +67,7 @@ final class CsvTrajectoryReader {
                     throw poses.orderProblem(code, row[0], rows.lineNumber(), rows.selectedText(0));
                 }
             }
-            double[][] c = poses.finish("only a header line");
+            double[][] c = poses.finish("it holds only a header line");
             String sha = lines.finishSha256();
             return new LoadedTrajectory(source, TrajectoryFormat.CSV, reason,
                     PlanarTrajectory.of(c[0], c[1], c[2], c[3]), sha, false);

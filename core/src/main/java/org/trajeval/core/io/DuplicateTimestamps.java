@@ -1,13 +1,13 @@
 package org.trajeval.core.io;
 
-/** What a reader does with two poses that carry the same timestamp. */
+/**
+ * What a reader does with two poses that have the same timestamp. Real files have them (the TUM
+ * RGB-D ground truth fr2_desk repeats one stamp, the EuRoC V102 estimate four); evo keeps them
+ * and its association then takes the first of equal stamps.
+ */
 public enum DuplicateTimestamps {
-    /** Refuse the file, naming both lines (default: a duplicate stamp usually means a logging fault). */
+    /** Refuse the file, naming both lines (default). */
     REFUSE,
-    /**
-     * Keep both poses in file order, as evo does (its nearest matching then picks one of them by
-     * its search rule; an interpolation across them uses the later one). The TUM fr2/desk ground
-     * truth and the EuRoC V1_02 estimate shipped with evo contain such duplicates.
-     */
+    /** Keep both poses, in file order (as evo does); needed to reproduce evo's numbers on such files. */
     KEEP
 }

@@ -24,7 +24,9 @@ final class EurocReader {
             NumericRows rows = new NumericRows(lines, source, (byte) ',', false);
             rows.select(new int[] {0, 1, 2, 3, 4, 5, 6, 7}, NAMES, UNITS);
             rows.requireAtLeastFields(8, "timestamp [ns], p_x, p_y, p_z [m], q_w, q_x, q_y, q_z, ...");
-            PoseBuffer poses = new PoseBuffer(source, "timestamp", 8, options.order(), options.duplicates(), options.maxPoses());
+            PoseBuffer poses = new PoseBuffer(source, "timestamp", 8, options.order(),
+                    options.duplicates(), options.maxPoses());
+            poses.sizeFrom(lines);
             double[] row = new double[8];
             double tolerance = options.quaternionTolerance();
             while (rows.next(row)) {
@@ -50,7 +52,7 @@ final class EurocReader {
                     throw poses.orderProblem(code, row[0], line, rows.selectedText(0));
                 }
             }
-            double[][] c = poses.finish("only comment or blank lines");
+            double[][] c = poses.finish("it holds only comment or blank lines");
             String sha = lines.finishSha256();
             return new LoadedTrajectory(source, TrajectoryFormat.EUROC, reason,
                     SpatialTrajectory.of(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]), sha, false);

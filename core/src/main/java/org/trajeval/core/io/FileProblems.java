@@ -9,7 +9,7 @@ import org.trajeval.core.InputProblem;
 /** The refusals that concern a whole file rather than one field: unreadable, empty, too large. */
 final class FileProblems {
     /** Command-line option that raises the byte limit. */
-    static final String MAX_BYTES_OPTION = "--max-bytes";
+    static final String MAX_BYTES_OPTION = "--max-file-size";
     /** Command-line option that raises the pose limit. */
     static final String MAX_POSES_OPTION = "--max-poses";
 
@@ -47,6 +47,6 @@ final class FileProblems {
 
     static InputException empty(String source, String what) {
         return new InputException(source, 0, null, InputProblem.EMPTY,
-                "the file must hold at least one pose, " + what, null);
+                "the file must hold at least one pose; " + what, null);
     }
 }

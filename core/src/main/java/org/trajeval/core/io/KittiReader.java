@@ -12,12 +12,15 @@ import org.trajeval.core.traj.SpatialTrajectory;
  * i gets t = i s and {@link LoadedTrajectory#indexTimestamps()} is true, unless a times file
  * (one time in s per line, as many lines as poses) gives real stamps. R must be a rotation
  * within the tolerance (max |R^T R - I| and |det R - 1|; the KITTI ground truth, written with 7
- * digits, is orthonormal to about 1e-6); it becomes a unit quaternion by Shepperd's method.
+ * digits, is orthonormal to about 1e-6) and is kept exactly as read, as evo keeps it
+ * ({@link SpatialTrajectory#ofMatrices}).
  */
 final class KittiReader {
     private static final String[] NAMES = {"r11", "r12", "r13", "tx", "r21", "r22", "r23", "ty", "r31", "r32", "r33",
         "tz"};
     private static final String[] UNITS = {"", "", "", "(m)", "", "", "", "(m)", "", "", "", "(m)"};
+    /** Pose-buffer columns: t, x, y, z, then R row-major (9). */
+    private static final int COLUMNS = 13;
     private static final String TIME_UNIT_REMEDY = "convert the times file to seconds (KITTI times are seconds)";
 
     private KittiReader() {
@@ -30,11 +33,12 @@ final class KittiReader {
             NumericRows rows = new NumericRows(lines, source, NumericRows.WHITESPACE, false);
             rows.select(new int[] {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}, NAMES, UNITS);
             rows.requireFields(12, "r11 r12 r13 tx r21 r22 r23 ty r31 r32 r33 tz, separated by spaces");
-            PoseBuffer poses = new PoseBuffer(source, "index", 13, TimestampOrder.REFUSE_UNSORTED,
-                    DuplicateTimestamps.REFUSE, options.maxPoses());
+            PoseBuffer poses = new PoseBuffer(source, "index", COLUMNS, TimestampOrder.REFUSE_UNSORTED,
+                    options.maxPoses());
+            poses.sizeFrom(lines);
             double[] in = new double[12];
             double[] r = new double[9];
-            double[] row = new double[13];
+            double[] row = new double[COLUMNS];
             double tolerance = options.quaternionTolerance();
             while (rows.next(in)) {
                 for (int i = 0; i < 3; i++) {
@@ -50,7 +54,6 @@ final class KittiReader {
                                     + "(max |R^T R - I| = %.3g, det R = %.6g)", tolerance, orthoError, det),
                             rows.lineText());
                 }
-                // the matrix is kept as read (as evo keeps it): KITTI files are orthonormal only to ~1e-6
                 row[0] = poses.size();
                 row[1] = in[3];
                 row[2] = in[7];
@@ -58,28 +61,23 @@ final class KittiReader {
                 System.arraycopy(r, 0, row, 4, 9);
                 poses.add(row, rows.lineNumber());
             }
-            c = poses.finish("only comment or blank lines");
+            c = poses.finish("it holds only comment or blank lines");
             sha = lines.finishSha256();
         }
-        if (options.kittiTimes() == null) {
-            return new LoadedTrajectory(source, TrajectoryFormat.KITTI, reason, trajectory(c), sha, true);
+        boolean indexStamps = options.kittiTimes() == null;
+        if (!indexStamps) {
+            c = withTimes(c, source, options);
+            reason = reason + "; times from " + options.kittiTimes();
         }
-        double[][] timed = withTimes(c, source, options);
-        return new LoadedTrajectory(source, TrajectoryFormat.KITTI, reason + "; times from " + options.kittiTimes(),
-                trajectory(timed), sha, false);
-    }
-
-    /** Columns t, x, y, z, r00..r22 to a trajectory that keeps the matrices as read. */
-    private static SpatialTrajectory trajectory(double[][] c) {
         int n = c[0].length;
-        double[] r = new double[9 * n];
-        for (int k = 0; k < 9; k++) {
-            double[] col = c[4 + k];
-            for (int i = 0; i < n; i++) {
-                r[9 * i + k] = col[i];
+        double[] matrices = new double[9 * n];
+        for (int i = 0; i < n; i++) {
+            for (int k = 0; k < 9; k++) {
+                matrices[9 * i + k] = c[4 + k][i];
             }
         }
-        return SpatialTrajectory.ofMatrices(c[0], c[1], c[2], c[3], r);
+        return new LoadedTrajectory(source, TrajectoryFormat.KITTI, reason,
+                SpatialTrajectory.ofMatrices(c[0], c[1], c[2], c[3], matrices), sha, indexStamps);
     }
 
     /** Replaces the index stamps by the times file's, one line per pose, with the order policy. */
@@ -92,10 +90,10 @@ final class KittiReader {
             NumericRows rows = new NumericRows(lines, source, NumericRows.WHITESPACE, false);
             rows.select(new int[] {0}, new String[] {"time"}, new String[] {"(s)"});
             rows.requireFields(1, "one time in s per line");
-            PoseBuffer poses = new PoseBuffer(source, "time", c.length, options.order(), options.duplicates(),
+            PoseBuffer poses = new PoseBuffer(source, "time", COLUMNS, options.order(), options.duplicates(),
                     options.maxPoses());
             double[] in = new double[1];
-            double[] row = new double[c.length];
+            double[] row = new double[COLUMNS];
             int k = 0;
             while (rows.next(in)) {
                 long line = rows.lineNumber();
@@ -107,7 +105,7 @@ final class KittiReader {
                             rows.selectedText(0));
                 }
                 row[0] = in[0];
-                for (int col = 1; col < c.length; col++) {
+                for (int col = 1; col < COLUMNS; col++) {
                     row[col] = c[col][k];
                 }
                 int code = poses.add(row, line);
@@ -119,7 +117,7 @@ final class KittiReader {
             if (k < n) {
                 throw countMismatch(source, 0, poseSource, n, "it has only " + k);
             }
-            return poses.finish("only comment or blank lines");
+            return poses.finish("it holds only comment or blank lines");
         }
     }
 

@@ -226,21 +226,21 @@ final class NumericRows {
     private void checkCount() {
         if (exactFields < 0) {
             if (count < minFields) {
-                throw wrongCount("at least " + minFields);
+                throw wrongCount("at least " + minFields + " fields");
             }
             exactFields = count;
             countSetAtLine = lines.lineNumber();
             return;
         }
         if (count != exactFields) {
-            throw wrongCount(countSetAtLine > 0 ? exactFields + " (as line " + countSetAtLine + ")"
-                    : String.valueOf(exactFields));
+            throw wrongCount(countSetAtLine > 0 ? exactFields + " fields like line " + countSetAtLine
+                    : exactFields + " fields");
         }
     }
 
     private InputException wrongCount(String expected) {
         return new InputException(source, lines.lineNumber(), null, InputProblem.WRONG_FIELD_COUNT,
-                "a line must have " + expected + " fields (" + layout + "), this one has " + count,
+                "a line must have " + expected + " (" + layout + "), this one has " + count,
                 lines.lineText());
     }
 

@@ -8,7 +8,8 @@ import org.trajeval.core.InputProblem;
  * Growing primitive columns of poses (column 0 is the timestamp in s) with the timestamp-order
  * policy: with {@link TimestampOrder#REFUSE_UNSORTED} each timestamp is checked against the one
  * before as it is added; with {@link TimestampOrder#SORT} the poses are sorted stably by time at
- * the end and any two equal timestamps are refused, naming both lines.
+ * the end and any two equal timestamps are refused, naming both lines (or kept in file order
+ * with {@link DuplicateTimestamps#KEEP}).
  */
 final class PoseBuffer {
     /** {@link #add} result: the pose was taken. */
@@ -23,21 +24,27 @@ final class PoseBuffer {
     private final String source;
     private final String timeColumn;
     private final TimestampOrder order;
-    private final boolean keepDuplicates;
     private final long maxPoses;
     private final double[][] columns;
     private long[] lines;
     private int n;
     private double lastT = Double.NaN;
     private long lastLine;
+    private ByteLines progress;
+    private final boolean keepDuplicates;
 
     /**
      * @param source file name for messages
      * @param timeColumn name of the time column for messages
      * @param columnCount number of columns, the time included
      */
-    PoseBuffer(String source, String timeColumn, int columnCount, TimestampOrder order,
-            DuplicateTimestamps duplicates, long maxPoses) {
+    PoseBuffer(String source, String timeColumn, int columnCount, TimestampOrder order, long maxPoses) {
+        this(source, timeColumn, columnCount, order, DuplicateTimestamps.REFUSE, maxPoses);
+    }
+
+    /** As above, with a duplicate-timestamp policy. */
+    PoseBuffer(String source, String timeColumn, int columnCount, TimestampOrder order, DuplicateTimestamps duplicates,
+            long maxPoses) {
         this.keepDuplicates = duplicates == DuplicateTimestamps.KEEP;
         this.source = source;
         this.timeColumn = timeColumn;
@@ -56,7 +63,7 @@ final class PoseBuffer {
      */
     int add(double[] row, long line) {
         double t = row[0];
-        if (lines == null && n > 0 && !(t > lastT) && !(t == lastT && keepDuplicates)) {
+        if (lines == null && n > 0 && !(t > lastT) && !(keepDuplicates && t == lastT)) {
             return t < lastT ? DECREASING : DUPLICATE;
         }
         if (n == columns[0].length || n >= maxPoses) {
@@ -75,11 +82,25 @@ final class PoseBuffer {
         return ACCEPTED;
     }
 
+    /**
+     * Lets the buffer size itself from the bytes read so far: at the first growth it extrapolates
+     * the pose count from the bytes per pose, so a big file needs one allocation, not twenty.
+     */
+    void sizeFrom(ByteLines lines) {
+        this.progress = lines;
+    }
+
     private void grow(long line) {
         if (n >= maxPoses) {
             throw FileProblems.tooManyPoses(source, line, maxPoses);
         }
-        int capacity = (int) Math.min((long) n * 2, maxPoses);
+        long wanted = (long) n * 2;
+        if (progress != null && progress.expectedBytes() > 0 && progress.consumedBytes() > 0) {
+            double posesPerByte = (double) n / progress.consumedBytes();
+            long estimate = (long) (posesPerByte * progress.expectedBytes() * 1.02) + 64;
+            wanted = Math.max(estimate, n + (n >> 3) + 64);
+        }
+        int capacity = (int) Math.min(wanted, maxPoses);
         for (int c = 0; c < columns.length; c++) {
             columns[c] = Arrays.copyOf(columns[c], capacity);
         }
@@ -116,8 +137,8 @@ final class PoseBuffer {
     private InputException duplicate(long firstLine, long line, double t, String found) {
         return new InputException(source, line, timeColumn, InputProblem.DUPLICATE_TIMESTAMP,
                 "column '" + timeColumn + "' repeats the timestamp of line " + firstLine + " (" + t
-                        + " s): timestamps must be unique (--sort does not remove duplicates; --duplicates keep keeps both poses, as evo"
-                        + " does)",
+                        + " s): timestamps must be unique (--sort does not remove duplicates; --duplicates keep keeps both"
+                        + " poses, as evo does)",
                 found);
     }
 
@@ -132,7 +153,7 @@ final class PoseBuffer {
             throw FileProblems.empty(source, emptyWhat);
         }
         double[][] out = new double[columns.length][];
-        if (lines != null && !strictlyIncreasing(columns[0], n)) {
+        if (lines != null && !increasing(columns[0], n, keepDuplicates)) {
             int[] perm = stableOrder(columns[0], n);
             for (int c = 0; c < columns.length; c++) {
                 double[] src = columns[c];
@@ -158,9 +179,9 @@ final class PoseBuffer {
         return out;
     }
 
-    private static boolean strictlyIncreasing(double[] t, int n) {
+    private static boolean increasing(double[] t, int n, boolean equalAllowed) {
         for (int i = 1; i < n; i++) {
-            if (!(t[i] > t[i - 1])) {
+            if (!(t[i] > t[i - 1]) && !(equalAllowed && t[i] == t[i - 1])) {
                 return false;
             }
         }

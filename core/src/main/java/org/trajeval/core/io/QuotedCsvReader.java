@@ -66,7 +66,7 @@ final class QuotedCsvReader {
         long[] lastEnd = {0};
         CSVRecord first = nextRecord(records, parser, source, lastEnd);
         if (first == null) {
-            throw FileProblems.empty(source, "and it has no header line either");
+            throw FileProblems.empty(source, "it has not even a header line");
         }
         List<String> header = new ArrayList<>(first.toList());
         if (!header.isEmpty() && header.get(0).startsWith("\uFEFF")) {
@@ -74,7 +74,8 @@ final class QuotedCsvReader {
         }
         long headerLine = parser.getCurrentLineNumber();
         CsvColumns columns = CsvColumns.locate(header, layout, source, headerLine);
-        PoseBuffer poses = new PoseBuffer(source, layout.timeColumn(), 4, options.order(), options.duplicates(), options.maxPoses());
+        PoseBuffer poses = new PoseBuffer(source, layout.timeColumn(), 4, options.order(),
+                    options.duplicates(), options.maxPoses());
         TimeUnit unit = layout.timeUnit();
         double[] row = new double[4];
         CSVRecord record;
@@ -101,7 +102,7 @@ final class QuotedCsvReader {
                 throw poses.orderProblem(code, row[0], line, stampText);
             }
         }
-        double[][] c = poses.finish("only a header line");
+        double[][] c = poses.finish("it holds only a header line");
         return PlanarTrajectory.of(c[0], c[1], c[2], c[3]);
     }
 

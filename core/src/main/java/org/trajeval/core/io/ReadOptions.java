@@ -12,7 +12,7 @@ import java.nio.file.Path;
  * @param quaternionTolerance largest accepted | |q| - 1 |
  * @param maxBytes largest accepted file size (bytes)
  * @param maxPoses largest accepted number of poses
- * @param duplicates what to do with equal timestamps
+ * @param duplicates what to do with two poses that have the same timestamp
  */
 public record ReadOptions(TrajectoryFormat format, CsvLayout csv, TimestampOrder order, Path kittiTimes,
         double quaternionTolerance, long maxBytes, long maxPoses, DuplicateTimestamps duplicates) {
@@ -22,7 +22,7 @@ public record ReadOptions(TrajectoryFormat format, CsvLayout csv, TimestampOrder
     /** Default largest pose count: 200 million. */
     public static final long DEFAULT_MAX_POSES = 200_000_000L;
 
-    /** @return auto-detected format, default CSV layout, refuse unsorted, tolerance 1e-3 */
+    /** @return auto-detected format, default CSV layout, refuse unsorted, tolerance 1e-3, refuse duplicates */
     public static ReadOptions defaults() {
         return new ReadOptions(null, CsvLayout.DEFAULT, TimestampOrder.REFUSE_UNSORTED, null, 1e-3,
                 DEFAULT_MAX_BYTES, DEFAULT_MAX_POSES, DuplicateTimestamps.REFUSE);
@@ -48,13 +48,13 @@ public record ReadOptions(TrajectoryFormat format, CsvLayout csv, TimestampOrder
         return new ReadOptions(format, csv, order, p, quaternionTolerance, maxBytes, maxPoses, duplicates);
     }
 
+    /** @return a copy with another duplicate-timestamp policy ({@link DuplicateTimestamps#KEEP} as evo) */
+    public ReadOptions withDuplicates(DuplicateTimestamps d) {
+        return new ReadOptions(format, csv, order, kittiTimes, quaternionTolerance, maxBytes, maxPoses, d);
+    }
+
     /** @return a copy with other size limits */
     public ReadOptions withLimits(long bytes, long poses) {
         return new ReadOptions(format, csv, order, kittiTimes, quaternionTolerance, bytes, poses, duplicates);
-    }
-
-    /** @return a copy with another duplicate-timestamp policy */
-    public ReadOptions withDuplicates(DuplicateTimestamps d) {
-        return new ReadOptions(format, csv, order, kittiTimes, quaternionTolerance, maxBytes, maxPoses, d);
     }
 }

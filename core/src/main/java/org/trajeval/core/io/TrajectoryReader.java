@@ -67,10 +67,10 @@ public final class TrajectoryReader {
     }
 
     private static void checkOptions(ReadOptions o) {
-        if (o.csv() == null || o.order() == null || o.csv().timeUnit() == null || o.csv().timeColumn() == null
+        if (o.csv() == null || o.order() == null || o.duplicates() == null || o.csv().timeUnit() == null || o.csv().timeColumn() == null
                 || o.csv().xColumn() == null || o.csv().yColumn() == null || o.csv().yawColumn() == null) {
             throw new InputException(null, 0, null, InputProblem.INVALID_OPTION,
-                    "the read options must give a CSV layout (column names, time unit) and an order policy", null);
+                    "the read options must give a CSV layout (column names, time unit), an order and a duplicate policy", null);
         }
         CsvTrajectoryReader.checkDelimiter(o.csv().delimiter());
         if (!(o.quaternionTolerance() >= 0.0 && o.quaternionTolerance() < 1.0)) {

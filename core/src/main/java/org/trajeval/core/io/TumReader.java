@@ -22,7 +22,9 @@ final class TumReader {
             NumericRows rows = new NumericRows(lines, source, NumericRows.WHITESPACE, false);
             rows.select(new int[] {0, 1, 2, 3, 4, 5, 6, 7}, NAMES, UNITS);
             rows.requireFields(8, "t tx ty tz qx qy qz qw, separated by spaces");
-            PoseBuffer poses = new PoseBuffer(source, "t", 8, options.order(), options.duplicates(), options.maxPoses());
+            PoseBuffer poses = new PoseBuffer(source, "t", 8, options.order(),
+                    options.duplicates(), options.maxPoses());
+            poses.sizeFrom(lines);
             double[] in = new double[8];
             double[] row = new double[8];
             double tolerance = options.quaternionTolerance();
@@ -51,7 +53,7 @@ final class TumReader {
                     throw poses.orderProblem(code, row[0], line, rows.selectedText(0));
                 }
             }
-            double[][] c = poses.finish("only comment or blank lines");
+            double[][] c = poses.finish("it holds only comment or blank lines");
             String sha = lines.finishSha256();
             return new LoadedTrajectory(source, TrajectoryFormat.TUM, reason,
                     SpatialTrajectory.of(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]), sha, false);

@@ -1,15 +1,80 @@
 package org.trajeval.core.stats;
 
-/** Order statistics by selection (Hoare's quickselect with median-of-three pivots), in place. */
+/**
+ * Order statistics. Non-negative values (errors) are selected by radix on their IEEE bits, which
+ * order like the values for +0.0 and up: two or three linear passes of 65 536-bucket histograms,
+ * no reordering. Anything else falls back to Hoare's quickselect (in place).
+ */
 final class Selection {
+    private static final int RADIX_BITS = 16;
+    private static final int BUCKETS = 1 << RADIX_BITS;
+    private static final int SMALL = 4096;
+
     private Selection() {
     }
 
     /**
      * @return the median of {@code a[0..n)}: the middle value, or the mean of the two middle
-     *     values for even n; the array is reordered
+     *     values for even n; non-negative input is left untouched, other input may be reordered
      */
     static double median(double[] a, int n) {
+        boolean nonNegative = true;
+        for (int i = 0; i < n && nonNegative; i++) {
+            nonNegative = a[i] >= 0.0 && Double.doubleToRawLongBits(a[i]) >= 0L;
+        }
+        if (!nonNegative || n <= SMALL) {
+            return medianBySwapping(a, n);
+        }
+        int k = n / 2;
+        double upper = radixSelect(a, n, k);
+        if (n % 2 == 1) {
+            return upper;
+        }
+        return 0.5 * (radixSelect(a, n, k - 1) + upper);
+    }
+
+    /**
+     * The k-th smallest (0-based) of non-negative values, by successive 16-bit digits of their
+     * bits, most significant first, until at most {@link #SMALL} candidates remain.
+     */
+    static double radixSelect(double[] a, int n, int k) {
+        long prefix = 0L;
+        int shift = 64;
+        int rank = k;
+        int candidates = n;
+        int[] count = new int[BUCKETS];
+        while (candidates > SMALL && shift > 0) {
+            shift -= RADIX_BITS;
+            java.util.Arrays.fill(count, 0);
+            long mask = shift + RADIX_BITS >= 64 ? 0L : (-1L << (shift + RADIX_BITS));
+            for (int i = 0; i < n; i++) {
+                long bits = Double.doubleToRawLongBits(a[i]);
+                if ((bits & mask) == prefix) {
+                    count[(int) ((bits >>> shift) & (BUCKETS - 1))]++;
+                }
+            }
+            int digit = 0;
+            while (rank >= count[digit]) {
+                rank -= count[digit];
+                digit++;
+            }
+            prefix |= ((long) digit) << shift;
+            candidates = count[digit];
+        }
+        long mask = shift >= 64 ? 0L : (-1L << shift);
+        double[] rest = new double[candidates];
+        int m = 0;
+        for (int i = 0; i < n && m < candidates; i++) {
+            if ((Double.doubleToRawLongBits(a[i]) & mask) == prefix) {
+                rest[m++] = a[i];
+            }
+        }
+        java.util.Arrays.sort(rest, 0, m);
+        return rest[rank];
+    }
+
+    /** The median by quickselect; reorders the array. */
+    static double medianBySwapping(double[] a, int n) {
         int k = n / 2;
         double upper = select(a, 0, n - 1, k);
         if (n % 2 == 1) {

@@ -12,9 +12,6 @@ import org.trajeval.core.geom.Rotations;
  * <p>Immutable: the arrays handed to the factories are owned by the trajectory afterwards.
  */
 public final class SpatialTrajectory implements Trajectory {
-    /** Rounding error of the norm of a quaternion normalised in double precision: 4 ulp(1). */
-    private static final double UNIT_NORM_ROUNDING = 4 * Math.ulp(1.0);
-
     private final double[] t;
     private final PoseSequence poses;
     private final double[] q;
@@ -26,9 +23,9 @@ public final class SpatialTrajectory implements Trajectory {
     }
 
     /**
-     * From quaternions (w, x, y, z), normalised unless already unit within 4 ulp (then kept bit
-     * for bit; evo interpolates the quaternions, not the matrices); the matrices are computed
-     * with {@link Rotations#fromQuaternion}.
+     * From quaternions (w, x, y, z), kept exactly as given (readers check their norm; evo also
+     * keeps them and normalises inside its conversions, as {@link Rotations#fromQuaternion} and
+     * {@link Rotations#slerp} do).
      *
      * @throws IllegalArgumentException on different lengths, non-finite values, a zero
      *     quaternion or decreasing timestamps
@@ -47,14 +44,6 @@ public final class SpatialTrajectory implements Trajectory {
             double norm = Math.sqrt(qw[i] * qw[i] + qx[i] * qx[i] + qy[i] * qy[i] + qz[i] * qz[i]);
             if (!(norm > 0.0)) {
                 throw new IllegalArgumentException("quaternion " + i + " is zero");
-            }
-            // a quaternion already unit within rounding is kept bit for bit (written trajectories
-            // read back exactly); others are normalised (evo normalises inside its conversions too)
-            if (Math.abs(norm - 1.0) > UNIT_NORM_ROUNDING) {
-                qw[i] /= norm;
-                qx[i] /= norm;
-                qy[i] /= norm;
-                qz[i] /= norm;
             }
             Rotations.fromQuaternion(qw[i], qx[i], qy[i], qz[i], r, 9 * i);
             q[4 * i] = qw[i];

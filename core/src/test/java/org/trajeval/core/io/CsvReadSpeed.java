@@ -22,7 +22,11 @@ public final class CsvReadSpeed {
         Path file = Path.of(args[0]);
         int rows = args.length > 1 ? Integer.parseInt(args[1]) : 10_000_000;
         if (!Files.exists(file)) {
-            write(file, rows);
+            if (args.length > 2 && args[2].equals("shortest")) {
+                writeShortest(file, rows);
+            } else {
+                write(file, rows);
+            }
         }
         System.out.printf(Locale.ROOT, "%s: %d bytes%n", file, Files.size(file));
         com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
@@ -60,6 +64,24 @@ public final class CsvReadSpeed {
             System.out.printf(Locale.ROOT, "parse only: %.2f M rows/s, %d bytes allocated in all = %.4f bytes/line%n",
                     n / s / 1e6, bytes, (double) bytes / n);
         }
+    }
+
+    /** Same walk, written by {@link TrajectoryWriter} (shortest round-trip digits, about 17 per number). */
+    private static void writeShortest(Path file, int rows) throws IOException {
+        SplittableRandom rnd = new SplittableRandom(20240611L);
+        double[] t = new double[rows];
+        double[] x = new double[rows];
+        double[] y = new double[rows];
+        double[] yaw = new double[rows];
+        double heading = 0;
+        for (int i = 0; i < rows; i++) {
+            heading += rnd.nextDouble(-0.01, 0.01);
+            t[i] = 1.7e9 + 0.01 * (i + 1);
+            x[i] = (i == 0 ? 0 : x[i - 1]) + 0.05 * Math.cos(heading);
+            y[i] = (i == 0 ? 0 : y[i - 1]) + 0.05 * Math.sin(heading);
+            yaw[i] = heading;
+        }
+        TrajectoryWriter.write(org.trajeval.core.traj.PlanarTrajectory.of(t, x, y, yaw), file);
     }
 
     private static void write(Path file, int rows) throws IOException {

@@ -88,6 +88,17 @@ class SortingTest {
                 e.getMessage());
     }
 
+    @Test
+    void keptDuplicatesStayInFileOrderWhenSorted(@TempDir Path dir) throws IOException {
+        // lines 2..5: t = 0.5, 0.2, 0.9, 0.2 with x = 1, 2, 3, 4 -> sorted x = 2, 4, 1, 3
+        Path file = write(dir.resolve("dup.csv"), "t,x,y,yaw", List.of("0.5,1,0,0", "0.2,2,0,0", "0.9,3,0,0",
+                "0.2,4,0,0"));
+        PlanarTrajectory t = (PlanarTrajectory) TrajectoryReader.read(file,
+                SORT.withDuplicates(DuplicateTimestamps.KEEP)).trajectory();
+        assertArrayEquals(new double[] {0.2, 0.2, 0.5, 0.9}, t.timestamps());
+        assertArrayEquals(new double[] {2, 4, 1, 3}, t.xs());
+    }
+
     private static Path write(Path p, String header, List<String> rows) throws IOException {
         List<String> all = new ArrayList<>();
         all.add(header);

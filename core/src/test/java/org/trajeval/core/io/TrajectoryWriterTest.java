@@ -69,11 +69,15 @@ class TrajectoryWriterTest {
             for (int k = 1; k < 4; k++) {
                 c[k][i] = anyFinite(rnd);
             }
+            double norm = 0;
             for (int k = 4; k < 8; k++) {
                 c[k][i] = rnd.nextDouble(-1, 1);
+                norm += c[k][i] * c[k][i];
+            }
+            for (int k = 4; k < 8; k++) {
+                c[k][i] /= Math.sqrt(norm); // unit within rounding, as the reader requires
             }
         }
-        // construction normalises the quaternions; the written trajectory is the reference
         SpatialTrajectory written = SpatialTrajectory.of(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]);
         Path file = dir.resolve("out.tum");
         TrajectoryWriter.write(written, file);

@@ -1,0 +1,43 @@
+package org.trajeval.cli;
+
+import java.io.PrintWriter;
+import org.trajeval.core.protocol.SuiteRunner;
+
+/**
+ * A one-line progress bar on the terminal ({@code [#####.....] 45/120 runs}), redrawn in place
+ * with a carriage return. Only used when the output is a terminal and the suite has many runs.
+ */
+final class ProgressBar implements SuiteRunner.Progress {
+    /** Suites with fewer runs get no bar. */
+    static final int MIN_RUNS = 10;
+    private static final int WIDTH = 30;
+
+    private final PrintWriter err;
+    private int lastDrawn = -1;
+
+    ProgressBar(PrintWriter err) {
+        this.err = err;
+    }
+
+    /** @return a bar when stderr is a terminal and there are enough runs to matter, else nothing */
+    static SuiteRunner.Progress forTerminal(PrintWriter err) {
+        return System.console() != null ? new ProgressBar(err) : SuiteRunner.Progress.none();
+    }
+
+    @Override
+    public synchronized void runFinished(int done, int total) {
+        if (total < MIN_RUNS) {
+            return;
+        }
+        int filled = (int) ((long) WIDTH * done / total);
+        if (filled == lastDrawn && done != total) {
+            return;
+        }
+        lastDrawn = filled;
+        err.print("\r[" + "#".repeat(filled) + ".".repeat(WIDTH - filled) + "] " + done + "/" + total + " runs");
+        if (done == total) {
+            err.print("\r" + " ".repeat(WIDTH + 30) + "\r");
+        }
+        err.flush();
+    }
+}

@@ -1,0 +1,77 @@
+package org.trajeval.cli;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import org.trajeval.core.protocol.SplitLeakageException;
+import org.trajeval.core.protocol.SuiteRunner;
+import org.trajeval.core.report.SuiteReport;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/** {@code trajeval suite MANIFEST --out DIR}: runs a benchmark suite and writes its reports. */
+@Command(name = "suite", mixinStandardHelpOptions = true, sortOptions = false,
+        description = {"Runs a benchmark suite: every (method, sequence, seed) of the manifest scored with the same "
+            + "protocol, failures counted, split and seed hygiene checked, per-method statistics and paired "
+            + "comparisons with intervals.",
+            "Writes report.json, runs.csv, methods.csv, comparisons.csv and report.html into --out."},
+        exitCodeListHeading = "%nExit codes:%n",
+        exitCodeList = {"0:success", "1:internal error (a bug; rerun with --verbose)",
+            "2:bad manifest or input (one line names the key path or file and what was expected)",
+            "3:split leakage found (and --allow-leakage not given)"})
+public final class SuiteCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "MANIFEST", description = "Suite manifest (YAML).")
+    Path manifest;
+
+    @Option(names = "--out", required = true, paramLabel = "DIR", description = "Report folder (created).")
+    Path out;
+
+    @Option(names = "--seed", paramLabel = "N", defaultValue = "1",
+            description = "Seed of the bootstrap resampling (default: ${DEFAULT-VALUE}); same seed, same bytes.")
+    long seed;
+
+    @Option(names = "--threads", paramLabel = "N", description = "Worker threads (default: the number of cores).")
+    Integer threads;
+
+    @Option(names = "--allow-leakage", description = "Run despite split leakage; the report flags it.")
+    boolean allowLeakage;
+
+    @Option(names = "--confidence", paramLabel = "LEVEL", defaultValue = "0.95",
+            description = "Confidence level of every interval (default: ${DEFAULT-VALUE}).")
+    double confidence;
+
+    @Option(names = "--resamples", paramLabel = "B", defaultValue = "4000",
+            description = "Bootstrap resamples (default: ${DEFAULT-VALUE}).")
+    int resamples;
+
+    @Option(names = "--verbose", description = "Print stack traces of errors.")
+    boolean verbose;
+
+    @Override
+    public Integer call() {
+        PrintWriter o = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        long start = System.nanoTime();
+        SuiteReport r;
+        try {
+            r = SuiteOutput.runAndWrite(manifest, out, new SuiteRunner.Settings(seed, allowLeakage, confidence,
+                    resamples), threads == null ? Runtime.getRuntime().availableProcessors() : threads, err);
+        } catch (SplitLeakageException e) {
+            err.println("trajeval: " + e.getMessage());
+            err.flush();
+            return ExitCodes.LEAKAGE;
+        }
+        SuiteOutput.printSummary(r, o);
+        o.printf(Locale.ROOT, "%nwrote %s (report.json, runs.csv, methods.csv, comparisons.csv, report.html) in %.1f s%n",
+                out, (System.nanoTime() - start) / 1e9);
+        o.flush();
+        return ExitCodes.OK;
+    }
+}

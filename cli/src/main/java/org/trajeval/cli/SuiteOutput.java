@@ -1,0 +1,69 @@
+package org.trajeval.cli;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import org.trajeval.core.protocol.RunEngine;
+import org.trajeval.core.protocol.SuiteRunner;
+import org.trajeval.core.report.SuiteReport;
+import org.trajeval.core.report.SuiteReportFiles;
+import org.trajeval.core.report.html.SuiteHtml;
+
+/** Runs a suite and writes its report folder; shared by {@code suite} and {@code demo}. */
+final class SuiteOutput {
+    private SuiteOutput() {
+    }
+
+    /** Runs the manifest with {@code threads} workers and writes report.json, the CSV tables and report.html. */
+    static SuiteReport runAndWrite(Path manifest, Path out, SuiteRunner.Settings settings, int threads,
+            PrintWriter err) {
+        if (threads < 1) {
+            throw new IllegalArgumentException("--threads must be >= 1, got " + threads);
+        }
+        ExecutorService pool = Executors.newFixedThreadPool(threads);
+        try {
+            SuiteRunner.Result result = new SuiteRunner(RunEngine.standard(), pool, ProgressBar.forTerminal(err))
+                    .run(manifest, settings);
+            SuiteReportFiles.write(result.report(), out);
+            SuiteHtml.write(result.report(), result.plots(), out);
+            return result.report();
+        } finally {
+            pool.shutdownNow();
+        }
+    }
+
+    /** Prints the hygiene warnings, the method table and the score comparisons. */
+    static void printSummary(SuiteReport r, PrintWriter out) {
+        for (String w : r.hygiene().warnings()) {
+            out.println("WARNING: " + w);
+        }
+        List<String> keys = r.protocol().score().stream().map(SuiteReport.ScoreTerm::metric).toList();
+        StringBuilder head = new StringBuilder(String.format(Locale.ROOT, "%-12s %5s %5s %-24s %-16s", "method",
+                "runs", "fail", "failure rate [Wilson]", "score (sd)"));
+        for (String k : keys) {
+            head.append(String.format(Locale.ROOT, " %18s", k));
+        }
+        out.println(head);
+        for (SuiteReport.MethodSummary m : r.methods()) {
+            String rate = m.failureRate() == null ? "-" : String.format(Locale.ROOT, "%.3f [%.3f, %.3f]",
+                    m.failureRate().estimate(), m.failureRate().wilson().lower(), m.failureRate().wilson().upper());
+            StringBuilder line = new StringBuilder(String.format(Locale.ROOT, "%-12s %5d %5d %-24s %-16s", m.name(),
+                    m.runs(), m.failures(), rate, num(m.score().mean()) + " (" + num(m.score().sd()) + ")"));
+            for (String k : keys) {
+                SuiteReport.MetricSummary ms = m.metrics().stream().filter(x -> x.metric().equals(k)).findFirst()
+                        .orElse(null);
+                line.append(String.format(Locale.ROOT, " %18s", ms == null ? "-" : num(ms.meanOfSequenceMeans())));
+            }
+            out.println(line);
+        }
+        out.println();
+        CompareCommand.printComparisons(r.comparisons(), r.protocol().analysis().confidenceLevel(), out);
+    }
+
+    static String num(Double v) {
+        return v == null ? "-" : String.format(Locale.ROOT, "%.4g", v);
+    }
+}

@@ -1,0 +1,48 @@
+package org.trajeval.cli;
+
+import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.trajeval.core.InputException;
+import org.trajeval.core.InputProblem;
+
+/** A pair too large for the heap is refused before reading, naming the option that raises the heap. */
+class MemoryBudgetTest {
+    @TempDir
+    Path dir;
+
+    private Path csv(String name, int rows) throws IOException {
+        StringBuilder sb = new StringBuilder("t,x,y,yaw\n");
+        for (int i = 0; i < rows; i++) {
+            sb.append(i * 0.01).append(",1.000000,2.000000,0.100000\n");
+        }
+        Path p = dir.resolve(name);
+        Files.writeString(p, sb);
+        return p;
+    }
+
+    @Test
+    void pairLargerThanTheHeapIsRefusedNamingXmx() throws IOException {
+        Path a = csv("a.csv", 10_000);
+        Path b = csv("b.csv", 10_000);
+        // 20 000 poses x 160 B = 3.2 MB needed; a 1 MB heap cannot hold them
+        InputException e = assertThrows(InputException.class, () -> MemoryBudget.check(a, b, 1_000_000));
+        assertEquals(InputProblem.TOO_LARGE, e.problem());
+        assertTrue(e.getMessage().contains("TRAJEVAL_OPTS=-Xmx"), e.getMessage());
+        // the pose count is estimated from the file size: within a few percent of 20 000
+        assertTrue(e.getMessage().matches(".*about (19|20|21),\\d{3} poses.*"), e.getMessage());
+    }
+
+    @Test
+    void pairThatFitsIsAccepted() throws IOException {
+        Path a = csv("a.csv", 1000);
+        assertDoesNotThrow(() -> MemoryBudget.check(a, a, 64L << 20));
+    }
+}

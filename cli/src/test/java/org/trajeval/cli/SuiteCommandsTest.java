@@ -1,0 +1,136 @@
+package org.trajeval.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.trajeval.core.protocol.DemoBenchmark;
+import picocli.CommandLine;
+
+/** suite, compare and splits check as a user runs them: output, exit codes, error lines. */
+class SuiteCommandsTest {
+    @TempDir
+    static Path dir;
+    private static Path manifest;
+    private static Path report;
+
+    record Run(int code, String out, String err) {
+    }
+
+    static Run run(String... args) {
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        CommandLine cl = TrajevalCommand.newCommandLine();
+        cl.setOut(new PrintWriter(out));
+        cl.setErr(new PrintWriter(err));
+        int code = cl.execute(args);
+        return new Run(code, out.toString(), err.toString());
+    }
+
+    @BeforeAll
+    static void suite() {
+        manifest = DemoBenchmark.write(dir.resolve("bench"), 7);
+        Run r = run("suite", manifest.toString(), "--out", dir.resolve("out").toString(), "--allow-leakage",
+                "--threads", "2", "--resamples", "1000");
+        assertEquals(0, r.code(), r.err());
+        report = dir.resolve("out/report.json");
+    }
+
+    @Test
+    void suiteWritesEveryReportFile() {
+        for (String f : new String[] {"report.json", "runs.csv", "methods.csv", "comparisons.csv", "report.html"}) {
+            assertTrue(Files.isRegularFile(dir.resolve("out").resolve(f)), f);
+        }
+    }
+
+    @Test
+    void suiteRefusesLeakageWithExitCodeThree() {
+        Run r = run("suite", manifest.toString(), "--out", dir.resolve("refused").toString());
+        assertEquals(ExitCodes.LEAKAGE, r.code());
+        assertTrue(r.err().contains("session s02: val {seq03}, test {seq11}"), r.err());
+        assertTrue(!Files.exists(dir.resolve("refused/report.json")));
+    }
+
+    @Test
+    void badManifestGivesOneLineWithTheKeyPath() throws IOException {
+        Path bad = dir.resolve("bench/bad.yaml");
+        Files.writeString(bad, Files.readString(manifest).replace("name: trajeval-demo", "name: trajeval-demo\ncolour: red"));
+        Run r = run("suite", bad.toString(), "--out", dir.resolve("bad").toString());
+        assertEquals(ExitCodes.BAD_INPUT, r.code());
+        assertEquals(1, r.err().strip().lines().count(), r.err());
+        assertTrue(r.err().contains("'colour': unknown key"), r.err());
+    }
+
+    @Test
+    void compareTwoMethodsOfOneReport() throws IOException {
+        Run r = run("compare", report.toString(), "-a", "alpha", "-b", "gamma", "--json");
+        assertEquals(0, r.code(), r.err());
+        JsonNode cs = new ObjectMapper().readTree(r.out());
+        assertEquals(3, cs.size()); // two score metrics and the score
+        assertEquals("ate_trans_rmse_m", cs.get(0).get("metric").asText());
+        assertEquals(8, cs.get(0).get("n").asInt());
+        assertTrue(cs.get(0).get("t_interval").get("upper").asDouble() < 0);
+        Run table = run("compare", report.toString(), "-a", "alpha", "-b", "gamma");
+        assertTrue(table.out().contains("which test applies (n = 8)"), table.out());
+    }
+
+    @Test
+    void compareTwoReportsPairsTheSameMethodByLabel() {
+        Run r = run("compare", report.toString(), report.toString(), "-a", "beta", "-b", "beta", "--json");
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.out().contains("\"method_a\" : \"beta@A\""), r.out());
+        assertTrue(r.out().contains("\"mean_difference\" : 0.0"), r.out()); // a report against itself
+    }
+
+    @Test
+    void compareRefusesAnUnknownMethod() {
+        Run r = run("compare", report.toString(), "-a", "alpha", "-b", "delta");
+        assertEquals(ExitCodes.BAD_INPUT, r.code());
+        assertTrue(r.err().contains("no method 'delta'"), r.err());
+    }
+
+    @Test
+    void splitsCheckFindsTheLeakAndExitsWithThree() {
+        Run r = run("splits", "check", manifest.resolveSibling("splits.csv").toString());
+        assertEquals(ExitCodes.LEAKAGE, r.code(), r.err());
+        assertTrue(r.out().contains("session s02: val {seq03}, test {seq11}"), r.out());
+    }
+
+    @Test
+    void splitsCheckOfTheLessonsTableFlagsSequenceS02() throws IOException {
+        // the lesson's make_demo_data table: S02 is in train and in test
+        Path t = dir.resolve("lesson_splits.csv");
+        Files.writeString(t, "sequence_id,split\nS01,train\nS02,train\nS03,val\nS02,test\nS04,test\n");
+        Run r = run("splits", "check", t.toString());
+        assertEquals(ExitCodes.LEAKAGE, r.code());
+        assertTrue(r.out().contains("session S02: train {S02}, test {S02}"), r.out());
+        assertTrue(r.out().contains("sequence S02: train {S02}, test {S02}"), r.out());
+    }
+
+    @Test
+    void splitsCheckOfACleanTableExitsWithZero() throws IOException {
+        Path t = dir.resolve("clean.csv");
+        Files.writeString(t, "sequence_id,session_id,split\na,s1,train\nb,s1,train\nc,s2,test\n");
+        Run r = run("splits", "check", t.toString());
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.out().startsWith("no leakage: 3 rows, 2 sessions"), r.out());
+    }
+
+    @Test
+    void splitsCheckOfABadTableNamesTheLine() throws IOException {
+        Path t = dir.resolve("bad.csv");
+        Files.writeString(t, "sequence_id,split\na,train\nb,holdout\n");
+        Run r = run("splits", "check", t.toString());
+        assertEquals(ExitCodes.BAD_INPUT, r.code());
+        assertTrue(r.err().contains(t + ":3: column 'split' must be train, val or test, found \"holdout\""), r.err());
+    }
+}

@@ -1,0 +1,28 @@
+package org.trajeval.core.protocol;
+
+import java.util.List;
+import java.util.Objects;
+
+/**
+ * One method (algorithm under test) of a suite manifest.
+ *
+ * @param name method name, unique in the suite ([A-Za-z0-9._-]+)
+ * @param estimates path pattern of the estimate files relative to the manifest's folder, with the
+ *     placeholders {@code {method}}, {@code {sequence}} and {@code {seed}}, e.g.
+ *     {@code runs/{method}/{sequence}/seed{seed}.csv}
+ * @param seeds the seeds this method was run with, ascending
+ */
+public record MethodSpec(String name, String estimates, List<Long> seeds) {
+    /** @throws NullPointerException on a missing component */
+    public MethodSpec {
+        Objects.requireNonNull(name, "name");
+        Objects.requireNonNull(estimates, "estimates");
+        seeds = List.copyOf(seeds);
+    }
+
+    /** @return the estimate path of one run: the pattern with its placeholders filled in */
+    public String estimateFor(String sequenceId, long seed) {
+        return estimates.replace("{method}", name).replace("{sequence}", sequenceId)
+                .replace("{seed}", Long.toString(seed));
+    }
+}

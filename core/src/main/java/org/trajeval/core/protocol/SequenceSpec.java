@@ -1,0 +1,25 @@
+package org.trajeval.core.protocol;
+
+import java.util.List;
+import java.util.Objects;
+
+/**
+ * One benchmark sequence of a suite manifest.
+ *
+ * @param id sequence id, unique in the suite ([A-Za-z0-9._-]+)
+ * @param session id of the recording session (one continuous traversal); the split must be the
+ *     same for all sequences of a session
+ * @param reference path of the reference trajectory, relative to the manifest's folder
+ * @param split the split the sequence belongs to
+ * @param tags environment tags (e.g. indoor, night), in manifest order
+ */
+public record SequenceSpec(String id, String session, String reference, Split split, List<String> tags) {
+    /** @throws NullPointerException on a missing component */
+    public SequenceSpec {
+        Objects.requireNonNull(id, "id");
+        Objects.requireNonNull(session, "session");
+        Objects.requireNonNull(reference, "reference");
+        Objects.requireNonNull(split, "split");
+        tags = List.copyOf(tags);
+    }
+}

@@ -1,0 +1,172 @@
+package org.trajeval.core.report;
+
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.DeserializationFeature;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.trajeval.core.report.SuiteReport.Bounds;
+import org.trajeval.core.report.SuiteReport.Comparison;
+import org.trajeval.core.report.SuiteReport.MethodSummary;
+import org.trajeval.core.report.SuiteReport.MetricSummary;
+import org.trajeval.core.report.SuiteReport.RunEntry;
+
+/**
+ * Writes a suite report as files: {@code report.json} (the full report), {@code runs.csv} (one row
+ * per run), {@code methods.csv} (one row per method) and {@code comparisons.csv} (one row per
+ * paired comparison). Everything is deterministic (no timestamps, no absolute paths); numbers are
+ * written with {@link Double#toString}, absent values as empty CSV fields / JSON null.
+ */
+public final class SuiteReportFiles {
+    /** File name of the JSON report. */
+    public static final String JSON = "report.json";
+    /** File name of the per-run table. */
+    public static final String RUNS_CSV = "runs.csv";
+    /** File name of the per-method table. */
+    public static final String METHODS_CSV = "methods.csv";
+    /** File name of the comparison table. */
+    public static final String COMPARISONS_CSV = "comparisons.csv";
+
+    private static final ObjectMapper READER = new ObjectMapper()
+            .disable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES);
+
+    private SuiteReportFiles() {
+    }
+
+    /** Writes the JSON report and the three CSV tables into {@code dir} (atomically, one by one). */
+    public static void write(SuiteReport report, Path dir) {
+        ReportJson.writeAtomically(dir.resolve(JSON), toJson(report));
+        ReportJson.writeAtomically(dir.resolve(RUNS_CSV), runsCsv(report));
+        ReportJson.writeAtomically(dir.resolve(METHODS_CSV), methodsCsv(report));
+        ReportJson.writeAtomically(dir.resolve(COMPARISONS_CSV), comparisonsCsv(report));
+    }
+
+    /** @return the report as pretty-printed JSON ending in a newline */
+    public static String toJson(SuiteReport report) {
+        return ReportJson.toJson(report) + "\n";
+    }
+
+    /**
+     * Parses a {@code report.json}.
+     *
+     * @throws IllegalArgumentException when the text is not a suite report of a known schema version
+     */
+    public static SuiteReport parse(String json, String source) {
+        SuiteReport r;
+        try {
+            r = READER.readValue(json, SuiteReport.class);
+        } catch (JsonProcessingException e) {
+            throw new IllegalArgumentException(source + ": not a suite report: " + e.getOriginalMessage(), e);
+        }
+        if (!SuiteReport.SCHEMA.equals(r.schema())) {
+            throw new IllegalArgumentException(source + ": not a suite report (schema " + SuiteReport.SCHEMA
+                    + " expected), found \"" + r.schema() + "\"");
+        }
+        if (r.schemaVersion() != SuiteReport.SCHEMA_VERSION) {
+            throw new IllegalArgumentException(source + ": suite report schema version " + SuiteReport.SCHEMA_VERSION
+                    + " expected, found \"" + r.schemaVersion() + "\"");
+        }
+        return r;
+    }
+
+    /** @return the per-run table */
+    public static String runsCsv(SuiteReport report) {
+        List<String> keys = report.protocol().score().stream().map(SuiteReport.ScoreTerm::metric).toList();
+        StringBuilder sb = new StringBuilder();
+        List<String> header = new ArrayList<>(List.of("method", "sequence", "seed", "split", "status",
+                "failure_reason", "failure_detail", "coverage"));
+        header.addAll(keys);
+        header.addAll(List.of("score", "estimate"));
+        row(sb, header);
+        for (RunEntry r : report.runs()) {
+            List<String> f = new ArrayList<>(List.of(r.method(), r.sequence(), Long.toString(r.seed()), r.split(),
+                    r.status(), r.failure() == null ? "" : r.failure().reason(),
+                    r.failure() == null ? "" : r.failure().detail(), num(r.coverage())));
+            for (String k : keys) {
+                f.add(num(r.metrics() == null ? null : r.metrics().get(k)));
+            }
+            f.add(num(r.score()));
+            f.add(r.estimate());
+            row(sb, f);
+        }
+        return sb.toString();
+    }
+
+    /** @return the per-method table */
+    public static String methodsCsv(SuiteReport report) {
+        List<String> keys = report.protocol().score().stream().map(SuiteReport.ScoreTerm::metric).toList();
+        StringBuilder sb = new StringBuilder();
+        List<String> header = new ArrayList<>(List.of("method", "runs", "failures", "failure_rate",
+                "failure_rate_wilson_lower", "failure_rate_wilson_upper", "failure_rate_cp_lower",
+                "failure_rate_cp_upper", "score_mean", "score_sd"));
+        for (String k : keys) {
+            header.add(k + "_mean_of_sequence_means");
+        }
+        row(sb, header);
+        for (MethodSummary m : report.methods()) {
+            List<String> f = new ArrayList<>(List.of(m.name(), Integer.toString(m.runs()),
+                    Integer.toString(m.failures())));
+            if (m.failureRate() == null) {
+                f.addAll(List.of("", "", "", "", ""));
+            } else {
+                f.add(num(m.failureRate().estimate()));
+                f.addAll(bounds(m.failureRate().wilson()));
+                f.addAll(bounds(m.failureRate().clopperPearson()));
+            }
+            f.add(num(m.score().mean()));
+            f.add(num(m.score().sd()));
+            for (String k : keys) {
+                MetricSummary ms = m.metrics().stream().filter(x -> x.metric().equals(k)).findFirst().orElse(null);
+                f.add(num(ms == null ? null : ms.meanOfSequenceMeans()));
+            }
+            row(sb, f);
+        }
+        return sb.toString();
+    }
+
+    /** @return the comparison table */
+    public static String comparisonsCsv(SuiteReport report) {
+        return comparisonsCsv(report.comparisons());
+    }
+
+    /** @return the comparison table of these comparisons */
+    public static String comparisonsCsv(List<Comparison> comparisons) {
+        StringBuilder sb = new StringBuilder();
+        row(sb, List.of("method_a", "method_b", "metric", "better", "n", "mean_difference", "t_lower", "t_upper",
+                "bootstrap_lower", "bootstrap_upper", "wilcoxon_p", "wilcoxon_method"));
+        for (Comparison c : comparisons) {
+            List<String> f = new ArrayList<>(List.of(c.methodA(), c.methodB(), c.metric(), c.better(),
+                    Integer.toString(c.n()), num(c.meanDifference())));
+            f.addAll(bounds(c.tInterval()));
+            f.addAll(bounds(c.bootstrap()));
+            f.add(c.wilcoxon() == null ? "" : num(c.wilcoxon().pValue()));
+            f.add(c.wilcoxon() == null ? "" : c.wilcoxon().method());
+            row(sb, f);
+        }
+        return sb.toString();
+    }
+
+    private static List<String> bounds(Bounds b) {
+        return b == null ? List.of("", "") : List.of(num(b.lower()), num(b.upper()));
+    }
+
+    private static String num(Double v) {
+        return v == null || !Double.isFinite(v) ? "" : Double.toString(v);
+    }
+
+    private static void row(StringBuilder sb, List<String> fields) {
+        for (int i = 0; i < fields.size(); i++) {
+            if (i > 0) {
+                sb.append(',');
+            }
+            String f = fields.get(i) == null ? "" : fields.get(i);
+            if (f.indexOf(',') >= 0 || f.indexOf('"') >= 0 || f.indexOf('\n') >= 0) {
+                sb.append('"').append(f.replace("\"", "\"\"")).append('"');
+            } else {
+                sb.append(f);
+            }
+        }
+        sb.append('\n');
+    }
+}
