@@ -54,17 +54,8 @@ public final class CompareCommand implements Callable<Integer> {
     @Option(names = "--json", description = "Print the comparisons as JSON.")
     boolean json;
 
-    @Option(names = "--seed", paramLabel = "N", defaultValue = "1",
-            description = "Seed of the bootstrap (default: ${DEFAULT-VALUE}).")
-    long seed;
-
-    @Option(names = "--confidence", paramLabel = "LEVEL", defaultValue = "0.95",
-            description = "Confidence level (default: ${DEFAULT-VALUE}).")
-    double confidence;
-
-    @Option(names = "--resamples", paramLabel = "B", defaultValue = "4000",
-            description = "Bootstrap resamples (default: ${DEFAULT-VALUE}).")
-    int resamples;
+    @picocli.CommandLine.Mixin
+    StatisticsOptions stats = new StatisticsOptions();
 
     @Option(names = "--verbose", description = "Print stack traces of errors.")
     boolean verbose;
@@ -110,7 +101,7 @@ public final class CompareCommand implements Callable<Integer> {
         if (sameScore) {
             keys.add(SuiteAnalysis.SCORE);
         }
-        SuiteAnalysis.Settings settings = new SuiteAnalysis.Settings(seed, confidence, resamples);
+        SuiteAnalysis.Settings settings = new SuiteAnalysis.Settings(stats.seed, stats.confidence, stats.resamples);
         List<Comparison> comparisons = new ArrayList<>();
         for (int i = 0; i < keys.size(); i++) {
             comparisons.add(SuiteAnalysis.compare(labelA, runsA, labelB, runsB, sequences, keys.get(i), settings, i));
@@ -125,7 +116,7 @@ public final class CompareCommand implements Callable<Integer> {
             if (!sameScore) {
                 out.println("score not compared: the two reports define it differently");
             }
-            printComparisons(comparisons, confidence, out);
+            printComparisons(comparisons, stats.confidence, out);
         }
         out.flush();
         return ExitCodes.OK;

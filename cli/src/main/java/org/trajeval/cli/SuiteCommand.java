@@ -33,23 +33,14 @@ public final class SuiteCommand implements Callable<Integer> {
     @Option(names = "--out", required = true, paramLabel = "DIR", description = "Report folder (created).")
     Path out;
 
-    @Option(names = "--seed", paramLabel = "N", defaultValue = "1",
-            description = "Seed of the bootstrap resampling (default: ${DEFAULT-VALUE}); same seed, same bytes.")
-    long seed;
+    @picocli.CommandLine.Mixin
+    StatisticsOptions stats = new StatisticsOptions();
 
     @Option(names = "--threads", paramLabel = "N", description = "Worker threads (default: the number of cores).")
     Integer threads;
 
     @Option(names = "--allow-leakage", description = "Run despite split leakage; the report flags it.")
     boolean allowLeakage;
-
-    @Option(names = "--confidence", paramLabel = "LEVEL", defaultValue = "0.95",
-            description = "Confidence level of every interval (default: ${DEFAULT-VALUE}).")
-    double confidence;
-
-    @Option(names = "--resamples", paramLabel = "B", defaultValue = "4000",
-            description = "Bootstrap resamples (default: ${DEFAULT-VALUE}).")
-    int resamples;
 
     @Option(names = "--verbose", description = "Print stack traces of errors.")
     boolean verbose;
@@ -61,8 +52,8 @@ public final class SuiteCommand implements Callable<Integer> {
         long start = System.nanoTime();
         SuiteReport r;
         try {
-            r = SuiteOutput.runAndWrite(manifest, out, new SuiteRunner.Settings(seed, allowLeakage, confidence,
-                    resamples), threads == null ? Runtime.getRuntime().availableProcessors() : threads, err);
+            r = SuiteOutput.runAndWrite(manifest, out, new SuiteRunner.Settings(stats.seed, allowLeakage,
+                    stats.confidence, stats.resamples), threads == null ? Runtime.getRuntime().availableProcessors() : threads, err);
         } catch (SplitLeakageException e) {
             err.println("trajeval: " + e.getMessage());
             err.flush();

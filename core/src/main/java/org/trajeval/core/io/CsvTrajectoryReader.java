@@ -67,10 +67,10 @@ final class CsvTrajectoryReader {
                     throw poses.orderProblem(code, row[0], rows.lineNumber(), rows.selectedText(0));
                 }
             }
-            double[][] c = poses.finish("it holds only a header line");
+            double[][] c = poses.finishUntrimmed("it holds only a header line");
             String sha = lines.finishSha256();
             return new LoadedTrajectory(source, TrajectoryFormat.CSV, reason,
-                    PlanarTrajectory.of(c[0], c[1], c[2], c[3]), sha, false);
+                    PlanarTrajectory.ofFirst(poses.size(), c[0], c[1], c[2], c[3]), sha, false);
         }
     }
 

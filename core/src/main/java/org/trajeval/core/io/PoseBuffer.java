@@ -179,6 +179,18 @@ final class PoseBuffer {
         return out;
     }
 
+    /**
+     * As {@link #finish} but without trimming: the columns may be longer than {@link #size()}
+     * (by the few percent the size estimate overshot), which spares a copy of every column at the
+     * moment memory peaks. Only the first {@link #size()} values are poses.
+     */
+    double[][] finishUntrimmed(String emptyWhat) {
+        if (n == 0 || lines != null) {
+            return finish(emptyWhat);
+        }
+        return columns.clone();
+    }
+
     private static boolean increasing(double[] t, int n, boolean equalAllowed) {
         for (int i = 1; i < n; i++) {
             if (!(t[i] > t[i - 1]) && !(equalAllowed && t[i] == t[i - 1])) {

@@ -23,32 +23,7 @@ public record ErrorStatistics(double rmse, double mean, double median, double st
      * The empty set gives NaN for every statistic and n = 0.
      */
     public static ErrorStatistics of(double[] values, int count) {
-        if (count == 0) {
-            double nan = Double.NaN;
-            return new ErrorStatistics(nan, nan, nan, nan, nan, nan, nan, 0);
-        }
-        double sum = 0.0;
-        double sse = 0.0;
-        double min = Double.POSITIVE_INFINITY;
-        double max = Double.NEGATIVE_INFINITY;
-        for (int i = 0; i < count; i++) {
-            double v = values[i];
-            sum += v;
-            sse += v * v;
-            min = Math.min(min, v);
-            max = Math.max(max, v);
-        }
-        double mean = sum / count;
-        double sq = 0.0;
-        for (int i = 0; i < count; i++) {
-            double d = values[i] - mean;
-            sq += d * d;
-        }
-        double[] sorted = Arrays.copyOf(values, count);
-        Arrays.sort(sorted);
-        double median = (count % 2 == 1) ? sorted[count / 2]
-                : 0.5 * (sorted[count / 2 - 1] + sorted[count / 2]);
-        return new ErrorStatistics(Math.sqrt(sse / count), mean, median, Math.sqrt(sq / count), min, max, sse, count);
+        return ofInPlace(Arrays.copyOf(values, count), count);
     }
 
     /**
@@ -58,7 +33,8 @@ public record ErrorStatistics(double rmse, double mean, double median, double st
      */
     public static ErrorStatistics ofInPlace(double[] values, int count) {
         if (count == 0) {
-            return of(values, 0);
+            double nan = Double.NaN;
+            return new ErrorStatistics(nan, nan, nan, nan, nan, nan, nan, 0);
         }
         double sum = 0.0;
         double sse = 0.0;

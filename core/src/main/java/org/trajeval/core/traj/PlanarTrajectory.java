@@ -13,8 +13,10 @@ public final class PlanarTrajectory implements Trajectory {
     private final double[] x;
     private final double[] y;
     private final double[] yaw;
+    private final int n;
 
-    private PlanarTrajectory(double[] t, double[] x, double[] y, double[] yaw) {
+    private PlanarTrajectory(int n, double[] t, double[] x, double[] y, double[] yaw) {
+        this.n = n;
         this.t = t;
         this.x = x;
         this.y = y;
@@ -29,16 +31,30 @@ public final class PlanarTrajectory implements Trajectory {
      */
     public static PlanarTrajectory of(double[] t, double[] x, double[] y, double[] yaw) {
         TimestampCheck.requireSameLength(t.length, x, y, yaw);
-        TimestampCheck.requireStrictlyIncreasing(t);
-        TimestampCheck.requireFinite("x", x);
-        TimestampCheck.requireFinite("y", y);
-        TimestampCheck.requireFinite("yaw", yaw);
-        return new PlanarTrajectory(t, x, y, yaw);
+        return ofFirst(t.length, t, x, y, yaw);
+    }
+
+    /**
+     * The first {@code n} values of the arrays as a trajectory, without copying (readers hand over
+     * columns with a little spare capacity). Takes ownership of the arrays.
+     *
+     * @throws IllegalArgumentException when an array is shorter than n, on non-finite values or
+     *     decreasing timestamps
+     */
+    public static PlanarTrajectory ofFirst(int n, double[] t, double[] x, double[] y, double[] yaw) {
+        if (n < 0 || t.length < n || x.length < n || y.length < n || yaw.length < n) {
+            throw new IllegalArgumentException("every column needs at least " + n + " values");
+        }
+        TimestampCheck.requireStrictlyIncreasing(t, n);
+        TimestampCheck.requireFinite("x", x, n);
+        TimestampCheck.requireFinite("y", y, n);
+        TimestampCheck.requireFinite("yaw", yaw, n);
+        return new PlanarTrajectory(n, t, x, y, yaw);
     }
 
     @Override
     public int size() {
-        return t.length;
+        return n;
     }
 
     @Override
@@ -68,22 +84,22 @@ public final class PlanarTrajectory implements Trajectory {
 
     @Override
     public double[] timestamps() {
-        return t.clone();
+        return Arrays.copyOf(t, n);
     }
 
     /** @return copies of the columns x (m), y (m), yaw (rad) */
     public double[] xs() {
-        return x.clone();
+        return Arrays.copyOf(x, n);
     }
 
     /** @return a copy of y (m) */
     public double[] ys() {
-        return y.clone();
+        return Arrays.copyOf(y, n);
     }
 
     /** @return a copy of yaw (rad) */
     public double[] yaws() {
-        return yaw.clone();
+        return Arrays.copyOf(yaw, n);
     }
 
     @Override
@@ -96,7 +112,8 @@ public final class PlanarTrajectory implements Trajectory {
             q[4 * i] = Math.cos(0.5 * yaw[i]);
             q[4 * i + 3] = Math.sin(0.5 * yaw[i]);
         }
-        return SpatialTrajectory.ofPoses(t.clone(), PoseSequence.of(x.clone(), y.clone(), new double[n], r), q);
+        return SpatialTrajectory.ofPoses(Arrays.copyOf(t, n), PoseSequence.of(Arrays.copyOf(x, n),
+                Arrays.copyOf(y, n), new double[n], r), q);
     }
 
     @Override
@@ -106,7 +123,7 @@ public final class PlanarTrajectory implements Trajectory {
 
     @Override
     public PlanarTrajectory slice(int from, int to) {
-        return new PlanarTrajectory(Arrays.copyOfRange(t, from, to), Arrays.copyOfRange(x, from, to),
+        return new PlanarTrajectory(to - from, Arrays.copyOfRange(t, from, to), Arrays.copyOfRange(x, from, to),
                 Arrays.copyOfRange(y, from, to), Arrays.copyOfRange(yaw, from, to));
     }
 }

@@ -14,7 +14,11 @@ final class TimestampCheck {
     }
 
     static void requireStrictlyIncreasing(double[] t) {
-        for (int i = 0; i < t.length; i++) {
+        requireStrictlyIncreasing(t, t.length);
+    }
+
+    static void requireStrictlyIncreasing(double[] t, int n) {
+        for (int i = 0; i < n; i++) {
             if (!Double.isFinite(t[i])) {
                 throw new IllegalArgumentException("timestamp " + i + " is not finite: " + t[i]);
             }
@@ -26,7 +30,11 @@ final class TimestampCheck {
     }
 
     static void requireFinite(String name, double[] v) {
-        for (int i = 0; i < v.length; i++) {
+        requireFinite(name, v, v.length);
+    }
+
+    static void requireFinite(String name, double[] v, int n) {
+        for (int i = 0; i < n; i++) {
             if (!Double.isFinite(v[i])) {
                 throw new IllegalArgumentException(name + "[" + i + "] is not finite: " + v[i]);
             }

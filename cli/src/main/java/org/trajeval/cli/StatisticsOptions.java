@@ -1,0 +1,18 @@
+package org.trajeval.cli;
+
+import picocli.CommandLine.Option;
+
+/** The options of the paired statistics shared by {@code suite} and {@code compare}. */
+public final class StatisticsOptions {
+    @Option(names = "--seed", paramLabel = "N", defaultValue = "1",
+            description = "Seed of the bootstrap resampling (default: ${DEFAULT-VALUE}); same seed, same bytes.")
+    long seed;
+
+    @Option(names = "--confidence", paramLabel = "LEVEL", defaultValue = "0.95",
+            description = "Confidence level of every interval (default: ${DEFAULT-VALUE}).")
+    double confidence;
+
+    @Option(names = "--resamples", paramLabel = "B", defaultValue = "4000",
+            description = "Bootstrap resamples (default: ${DEFAULT-VALUE}).")
+    int resamples;
+}

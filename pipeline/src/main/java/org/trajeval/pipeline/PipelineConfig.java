@@ -1,0 +1,98 @@
+package org.trajeval.pipeline;
+
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.Locale;
+import org.trajeval.pipeline.bundle.BundleLimits;
+import org.trajeval.pipeline.dir.Completion;
+import org.trajeval.pipeline.dir.DirectoryOptions;
+
+/**
+ * The service's settings, read from a YAML file (keys as below, snake_case), then environment
+ * variables {@code TRAJEVAL_PIPELINE_<KEY>} (nested keys joined by '_', e.g.
+ * {@code TRAJEVAL_PIPELINE_KAFKA_BOOTSTRAP_SERVERS}), then command-line options. See
+ * {@link ConfigLoader}.
+ *
+ * @param root the service's root folder (incoming/, processing/, done/, failed/, reports/, ledger/)
+ * @param workers threads scoring runs in parallel
+ * @param queueCapacity bundles claimed ahead of the workers
+ * @param completion marker or marker_or_quiet
+ * @param quietTimeS quiet time before a bundle without marker counts as complete (s)
+ * @param scanIntervalS pause between scans of an idle incoming/ (s)
+ * @param logFormat text or json
+ * @param limits bundle size limits
+ * @param http metrics and health endpoint
+ * @param kafka Kafka mode settings
+ */
+public record PipelineConfig(String root, int workers, int queueCapacity, String completion, double quietTimeS,
+        double scanIntervalS, String logFormat, Limits limits, Http http, Kafka kafka) {
+
+    /**
+     * @param maxFileBytes largest trajectory or manifest file (bytes)
+     * @param maxUnzippedBytes largest total extracted from one zip (bytes)
+     * @param maxZipEntries most entries in one zip
+     * @param maxCompressionRatio largest extracted/zip size ratio
+     */
+    public record Limits(long maxFileBytes, long maxUnzippedBytes, int maxZipEntries, double maxCompressionRatio) {
+    }
+
+    /**
+     * @param enabled serve /metrics and /health
+     * @param host address to bind
+     * @param port port (0: a free one)
+     */
+    public record Http(boolean enabled, String host, int port) {
+    }
+
+    /**
+     * @param bootstrapServers host:port list of the cluster (ignored with --embedded-broker)
+     * @param groupId consumer group shared by every instance
+     * @param inputTopic topic of run events
+     * @param outputTopic topic of report events
+     * @param deadLetterTopic topic of refused events with their reason
+     * @param partitions partitions of the topics when the service creates them
+     * @param bundleBase folder that bundle locations in events are relative to (and must stay in)
+     * @param sessionTimeoutMs consumer session timeout (ms): how soon a dead instance's partitions move
+     * @param transactionTimeoutMs producer transaction timeout (ms)
+     * @param instanceId this instance's id (transactional id suffix); empty: host name + process id
+     * @param embeddedBrokerDir data folder of --embedded-broker; empty: ROOT/kafka-data
+     * @param embeddedBrokerPort port of --embedded-broker; 0: a free one
+     */
+    public record Kafka(String bootstrapServers, String groupId, String inputTopic, String outputTopic,
+            String deadLetterTopic, int partitions, String bundleBase, int sessionTimeoutMs, int transactionTimeoutMs,
+            String instanceId, String embeddedBrokerDir, int embeddedBrokerPort) {
+    }
+
+    /** @return the defaults */
+    public static PipelineConfig defaults() {
+        return new PipelineConfig("pipeline-data", 2, 2, "marker", 60, 1, "text",
+                new Limits(BundleLimits.DEFAULTS.maxFileBytes(), BundleLimits.DEFAULTS.maxUnzippedBytes(),
+                        BundleLimits.DEFAULTS.maxZipEntries(), BundleLimits.DEFAULTS.maxCompressionRatio()),
+                new Http(true, "127.0.0.1", 9464),
+                new Kafka("127.0.0.1:9092", "trajeval-pipeline", "trajeval.runs", "trajeval.reports",
+                        "trajeval.runs.dlq", 3, "", 10_000, 30_000, "", "", 0));
+    }
+
+    /** @return the root folder */
+    public Path rootPath() {
+        return Path.of(root);
+    }
+
+    /** @return the bundle limits */
+    public BundleLimits bundleLimits() {
+        return new BundleLimits(limits.maxFileBytes(), limits.maxUnzippedBytes(), limits.maxZipEntries(),
+                limits.maxCompressionRatio());
+    }
+
+    /** @return the directory mode options */
+    public DirectoryOptions directoryOptions() {
+        Completion c;
+        try {
+            c = Completion.valueOf(completion.trim().toUpperCase(Locale.ROOT));
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("completion must be marker or marker_or_quiet, found \"" + completion + "\"");
+        }
+        return new DirectoryOptions(workers, queueCapacity, c, Duration.ofMillis(Math.round(quietTimeS * 1000)),
+                Duration.ofMillis(Math.max(1, Math.round(scanIntervalS * 1000))));
+    }
+}

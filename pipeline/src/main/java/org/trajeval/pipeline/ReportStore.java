@@ -1,0 +1,79 @@
+package org.trajeval.pipeline;
+
+import java.nio.file.Path;
+import java.time.Clock;
+import java.time.Instant;
+import java.util.Optional;
+import org.trajeval.core.Version;
+import org.trajeval.core.report.EvaluationReport;
+import org.trajeval.core.report.ReportJson;
+import org.trajeval.pipeline.bundle.ContentHash;
+import org.trajeval.pipeline.ledger.Ledger;
+import org.trajeval.pipeline.ledger.LedgerEntry;
+
+/**
+ * Files reports: {@code reports/RUN_ID.json} for a run's first content, {@code RUN_ID.vN.json}
+ * for its N-th distinct content, each written atomically (temp file, fsync, rename, 0644) and
+ * then recorded in the ledger. The decision "new, changed or already reported" and the write are
+ * one section under the ledger's lock, so two workers (or processes) never report a run twice.
+ *
+ * <p>Crash safety: a crash after the report but before the ledger line leaves a complete report;
+ * the retry computes the same version and rewrites the same file with the same content.
+ */
+public final class ReportStore {
+    private final Path reportsDir;
+    private final Ledger ledger;
+    private final Clock clock;
+
+    /**
+     * @param reportsDir folder of the report files
+     * @param ledger the ledger shared by every worker
+     * @param clock clock for {@code processed_at}
+     */
+    public ReportStore(Path reportsDir, Ledger ledger, Clock clock) {
+        this.reportsDir = reportsDir;
+        this.ledger = ledger;
+        this.clock = clock;
+    }
+
+    /** @return the report file of a run version */
+    public Path reportFile(String runId, int version) {
+        return reportsDir.resolve(version == 1 ? runId + ".json" : runId + ".v" + version + ".json");
+    }
+
+    /** @return the earlier report of this content, if the run was reported with it (no lock; a hint) */
+    public boolean probablyReported(String runId, ContentHash hash) {
+        return ledger.probablyReported(runId, hash.content());
+    }
+
+    /** @return the ledger entry of this content, if it was reported (reads the ledger under its lock) */
+    public Optional<LedgerEntry> find(String runId, ContentHash hash) {
+        return ledger.locked(v -> v.find(runId, hash.content()));
+    }
+
+    /**
+     * Writes the report unless this content was reported before.
+     *
+     * @return REPORTED with the new version and file, or DUPLICATE with the earlier ones
+     */
+    public RunResult commit(RunJob job, ContentHash hash, EvaluationReport evaluation) {
+        RunMetadata m = job.metadata();
+        return ledger.locked(view -> {
+            Optional<LedgerEntry> earlier = view.find(m.runId(), hash.content());
+            if (earlier.isPresent()) {
+                int v = earlier.get().version();
+                return new RunResult(Outcome.DUPLICATE, m.runId(), v, reportFile(m.runId(), v), null,
+                        earlier.get().source());
+            }
+            int version = view.latestVersion(m.runId()) + 1;
+            Instant now = clock.instant();
+            PipelineReport report = new PipelineReport(PipelineReport.SCHEMA, PipelineReport.SCHEMA_VERSION,
+                    Version.TOOL, m.runId(), m.robotId(), m.sequence(), m.method(), m.seed(), version,
+                    hash.content(), hash.reference(), hash.estimate(), job.source(), now.toString(), evaluation);
+            Path file = reportFile(m.runId(), version);
+            ReportJson.writeAtomically(file, ReportJson.toJson(report));
+            view.append(new LedgerEntry(m.runId(), hash.content(), version, now.toEpochMilli(), job.source()));
+            return new RunResult(Outcome.REPORTED, m.runId(), version, file, null, null);
+        });
+    }
+}

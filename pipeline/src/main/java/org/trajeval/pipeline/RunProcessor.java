@@ -1,0 +1,61 @@
+package org.trajeval.pipeline;
+
+import org.trajeval.core.report.EvaluationReport;
+import org.trajeval.pipeline.bundle.ContentHash;
+
+/**
+ * Turns one {@link RunJob} into a report: fingerprint, skip if already reported, score, file the
+ * report. Shared by the directory and the Kafka mode. Thread-safe.
+ */
+public final class RunProcessor {
+    private final RunScorer scorer;
+    private final ReportStore store;
+
+    /**
+     * @param scorer reads and scores the trajectories
+     * @param store files reports and keeps the ledger
+     */
+    public RunProcessor(RunScorer scorer, ReportStore store) {
+        this.scorer = scorer;
+        this.store = store;
+    }
+
+    /** @return the store the reports go to */
+    public ReportStore store() {
+        return store;
+    }
+
+    /**
+     * Processes a run.
+     *
+     * @throws StageException when the run cannot be scored or filed (with stage and reason)
+     */
+    public RunResult process(RunJob job) {
+        ContentHash hash;
+        try {
+            hash = ContentHash.of(job);
+        } catch (RuntimeException e) {
+            throw new StageException(RunFailure.of(Stage.SCORE, e), e);
+        }
+        String runId = job.metadata().runId();
+        if (store.probablyReported(runId, hash)) {
+            var earlier = store.find(runId, hash);
+            if (earlier.isPresent()) {
+                int v = earlier.get().version();
+                return new RunResult(Outcome.DUPLICATE, runId, v, store.reportFile(runId, v), null,
+                        earlier.get().source());
+            }
+        }
+        EvaluationReport evaluation;
+        try {
+            evaluation = scorer.score(job);
+        } catch (RuntimeException e) {
+            throw new StageException(RunFailure.of(Stage.SCORE, e), e);
+        }
+        try {
+            return store.commit(job, hash, evaluation);
+        } catch (RuntimeException e) {
+            throw new StageException(RunFailure.of(Stage.REPORT, e), e);
+        }
+    }
+}

@@ -1,0 +1,59 @@
+package org.trajeval.pipeline.bundle;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.security.MessageDigest;
+import java.security.NoSuchAlgorithmException;
+import java.util.HexFormat;
+import org.trajeval.pipeline.RunJob;
+
+/**
+ * SHA-256 fingerprints of a run: each input file, and the run's content hash over its identity,
+ * settings and both files. Two runs with the same content hash are the same run.
+ *
+ * @param reference SHA-256 of the reference file, lower-case hex
+ * @param estimate SHA-256 of the estimate file, lower-case hex
+ * @param content SHA-256 of "run id, robot, sequence, method, seed, settings, reference hash, estimate hash"
+ */
+public record ContentHash(String reference, String estimate, String content) {
+
+    /** @return the fingerprints of a run (reads both files once, streaming) */
+    public static ContentHash of(RunJob job) {
+        String ref = ofFile(job.reference());
+        String est = ofFile(job.estimate());
+        var m = job.metadata();
+        String identity = String.join("\n", m.runId(), String.valueOf(m.robotId()), String.valueOf(m.sequence()),
+                String.valueOf(m.method()), String.valueOf(m.seed()), job.settings().canonical(), ref, est);
+        return new ContentHash(ref, est, hex(digest().digest(identity.getBytes(StandardCharsets.UTF_8))));
+    }
+
+    /** @return SHA-256 of the file's bytes, lower-case hex */
+    public static String ofFile(Path file) {
+        MessageDigest d = digest();
+        byte[] buf = new byte[64 * 1024];
+        try (InputStream in = Files.newInputStream(file)) {
+            for (int n; (n = in.read(buf)) > 0; ) {
+                d.update(buf, 0, n);
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException("could not read " + file + ": " + e.getMessage(), e);
+        }
+        return hex(d.digest());
+    }
+
+    private static MessageDigest digest() {
+        try {
+            return MessageDigest.getInstance("SHA-256");
+        } catch (NoSuchAlgorithmException e) {
+            throw new IllegalStateException("the JDK has no SHA-256", e);
+        }
+    }
+
+    private static String hex(byte[] b) {
+        return HexFormat.of().formatHex(b);
+    }
+}

@@ -1,0 +1,321 @@
+package org.trajeval.pipeline.dir;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.SerializationFeature;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.DirectoryStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Clock;
+import java.time.Duration;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Semaphore;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import org.trajeval.core.report.ReportJson;
+import org.trajeval.pipeline.Outcome;
+import org.trajeval.pipeline.RunFailure;
+import org.trajeval.pipeline.RunJob;
+import org.trajeval.pipeline.RunProcessor;
+import org.trajeval.pipeline.RunResult;
+import org.trajeval.pipeline.Stage;
+import org.trajeval.pipeline.StageException;
+import org.trajeval.pipeline.bundle.BundleOpener;
+import org.trajeval.pipeline.metrics.PipelineMetrics;
+
+/**
+ * The directory mode: watches {@code incoming/}, claims each complete bundle by an atomic move
+ * into {@code processing/}, scores it on a bounded worker pool, writes {@code reports/RUN_ID.json}
+ * and moves the bundle to {@code done/}, or to {@code failed/} with {@code NAME.error.json}.
+ *
+ * <p>Backpressure: at most {@code workers + queueCapacity} bundles are claimed at once; the
+ * scanner reads incoming/ as a lazy directory stream and waits for a free permit, so a backlog of
+ * any size stays on disk. Start-up resumes slots left in processing/ by a process that died.
+ * {@link #stop()} (e.g. on SIGTERM) stops claiming and lets in-flight runs finish.
+ */
+public final class DirectoryService {
+    private static final Logger LOG = LoggerFactory.getLogger(DirectoryService.class);
+    private static final ObjectMapper JSON = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
+
+    private final DirectoryLayout layout;
+    private final DirectoryOptions options;
+    private final RunProcessor processor;
+    private final BundleOpener opener;
+    private final PipelineMetrics metrics;
+    private final Clock clock;
+    private final IncomingScanner scanner;
+    private final Semaphore permits;
+    private final int maxPermits;
+    private final AtomicLong reported = new AtomicLong();
+    private final AtomicLong duplicates = new AtomicLong();
+    private final AtomicLong failed = new AtomicLong();
+    private final AtomicInteger claimedThisPass = new AtomicInteger();
+    private volatile boolean stopping;
+    private volatile boolean running;
+    private final Object wake = new Object();
+
+    /**
+     * @param layout the service's folders (created if missing)
+     * @param options workers, queue, completion policy
+     * @param processor scores and files runs
+     * @param opener opens bundles with the size limits
+     * @param metrics where to count
+     * @param clock clock for quiet time and error files
+     */
+    public DirectoryService(DirectoryLayout layout, DirectoryOptions options, RunProcessor processor,
+            BundleOpener opener, PipelineMetrics metrics, Clock clock) {
+        this.layout = layout.create();
+        this.options = options;
+        this.processor = processor;
+        this.opener = opener;
+        this.metrics = metrics;
+        this.clock = clock;
+        this.scanner = new IncomingScanner(layout.incoming(), options.completion(), options.quietTime(), clock);
+        this.maxPermits = options.workers() + options.queueCapacity();
+        this.permits = new Semaphore(maxPermits);
+    }
+
+    /**
+     * Processes every complete bundle present (and those that complete meanwhile), then returns.
+     *
+     * @return what was done
+     */
+    public DrainSummary drain() {
+        return run(true);
+    }
+
+    /** Runs until {@link #stop()}; in-flight runs finish before it returns. */
+    public DrainSummary runUntilStopped() {
+        return run(false);
+    }
+
+    /** Asks the service to stop claiming; {@link #runUntilStopped()} returns once in-flight runs finished. */
+    public void stop() {
+        stopping = true;
+        synchronized (wake) {
+            wake.notifyAll();
+        }
+    }
+
+    /** @return true while the service runs (for /health) */
+    public boolean isRunning() {
+        return running && !stopping;
+    }
+
+    private DrainSummary run(boolean drain) {
+        running = true;
+        ExecutorService workers = Executors.newFixedThreadPool(options.workers(), r -> {
+            Thread t = new Thread(r, "trajeval-worker");
+            t.setDaemon(false);
+            return t;
+        });
+        try {
+            resumeLeftovers(workers);
+            while (!stopping) {
+                claimedThisPass.set(0);
+                scanPass(workers);
+                if (drain) {
+                    awaitIdle();
+                    if (claimedThisPass.get() == 0) {
+                        break;
+                    }
+                } else if (claimedThisPass.get() == 0) {
+                    synchronized (wake) {
+                        if (!stopping) {
+                            wake.wait(options.scanInterval().toMillis());
+                        }
+                    }
+                }
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } finally {
+            workers.shutdown();
+            try {
+                while (!workers.awaitTermination(1, TimeUnit.SECONDS)) {
+                    LOG.info("waiting for in-flight runs to finish");
+                }
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            running = false;
+        }
+        return new DrainSummary(reported.get(), duplicates.get(), failed.get());
+    }
+
+    private void awaitIdle() throws InterruptedException {
+        permits.acquire(maxPermits);
+        permits.release(maxPermits);
+    }
+
+    private void resumeLeftovers(ExecutorService workers) throws InterruptedException {
+        try (DirectoryStream<Path> ds = Files.newDirectoryStream(layout.processing())) {
+            for (Path p : ds) {
+                if (stopping) {
+                    return;
+                }
+                permits.acquire();
+                Slot slot;
+                try {
+                    slot = Slot.resume(layout.incoming(), p);
+                } catch (IOException e) {
+                    LOG.warn("could not resume {}: {}", p, e.toString());
+                    slot = null;
+                }
+                if (slot == null) {
+                    permits.release();
+                    continue;
+                }
+                LOG.info("resuming bundle={}", slot.dir().getFileName());
+                submit(workers, slot);
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException("could not list " + layout.processing() + ": " + e.getMessage(), e);
+        }
+    }
+
+    private void scanPass(ExecutorService workers) throws InterruptedException {
+        long waiting = countKeys();
+        metrics.queueDepth().set(waiting);
+        try (DirectoryStream<Path> ds = Files.newDirectoryStream(layout.incoming())) {
+            for (Path p : ds) {
+                if (stopping) {
+                    return;
+                }
+                String name = p.getFileName().toString();
+                if (!scanner.maybeKey(name)) {
+                    continue;
+                }
+                BundleUnit unit = scanner.completeUnit(name);
+                if (unit == null) {
+                    continue;
+                }
+                while (!permits.tryAcquire(200, TimeUnit.MILLISECONDS)) {
+                    if (stopping) {
+                        return;
+                    }
+                }
+                Slot slot;
+                try {
+                    slot = Slot.claim(layout.incoming(), layout.processing(), unit);
+                } catch (IOException e) {
+                    LOG.warn("could not claim {}: {}", name, e.toString());
+                    slot = null;
+                }
+                if (slot == null) {
+                    permits.release();
+                    continue;
+                }
+                claimedThisPass.incrementAndGet();
+                metrics.queueDepth().updateAndGet(v -> Math.max(0, v - 1));
+                submit(workers, slot);
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException("could not list " + layout.incoming() + ": " + e.getMessage(), e);
+        }
+    }
+
+    private long countKeys() {
+        long n = 0;
+        try (DirectoryStream<Path> ds = Files.newDirectoryStream(layout.incoming())) {
+            for (Path p : ds) {
+                String name = p.getFileName().toString();
+                if (name.endsWith(".done") && !IncomingScanner.ignored(name)) {
+                    n++;
+                }
+            }
+        } catch (IOException e) {
+            LOG.warn("could not count {}: {}", layout.incoming(), e.toString());
+        }
+        return n;
+    }
+
+    private void submit(ExecutorService workers, Slot slot) {
+        metrics.inProcessing().incrementAndGet();
+        workers.execute(() -> {
+            try {
+                process(slot);
+            } finally {
+                metrics.inProcessing().decrementAndGet();
+                permits.release();
+            }
+        });
+    }
+
+    /** Top-level handler of one bundle: whatever happens, the bundle ends in done/ or failed/. */
+    private void process(Slot slot) {
+        long start = System.nanoTime();
+        BundleUnit unit = slot.unit();
+        Path scratch = slot.dir().resolve(".unpacked");
+        RunResult result;
+        try {
+            Slot.deleteTree(scratch);
+            Path payload = switch (unit.kind()) {
+                case FOLDER -> slot.dir().resolve(unit.name());
+                case ZIP -> slot.dir().resolve(unit.name() + ".zip");
+                case PAIR -> slot.dir();
+            };
+            RunJob job = opener.open(unit.kind(), payload, unit.name(), scratch);
+            result = processor.process(job);
+        } catch (StageException e) {
+            result = RunResult.failed(null, e.failure());
+        } catch (IOException e) {
+            result = RunResult.failed(null, RunFailure.of(Stage.CLAIM, new UncheckedIOException(e)));
+        } catch (RuntimeException e) {
+            LOG.error("internal error on bundle={}", unit.slotName(), e);
+            result = RunResult.failed(null, RunFailure.of(Stage.SCORE, e));
+        }
+        try {
+            Slot.deleteTree(scratch);
+        } catch (IOException e) {
+            LOG.warn("could not delete {}: {}", scratch, e.toString());
+        }
+        Duration took = Duration.ofNanos(System.nanoTime() - start);
+        try {
+            finish(slot, result);
+        } catch (RuntimeException e) {
+            LOG.error("could not finish bundle={}; it stays in processing/ and is resumed on restart", unit.slotName(), e);
+            slot.close();
+            return;
+        }
+        metrics.recordRun(result.outcome(), took);
+        switch (result.outcome()) {
+            case REPORTED -> reported.incrementAndGet();
+            case DUPLICATE -> duplicates.incrementAndGet();
+            case FAILED -> failed.incrementAndGet();
+        }
+    }
+
+    private void finish(Slot slot, RunResult result) {
+        if (result.outcome() == Outcome.FAILED) {
+            Path dest = slot.destination(layout.failed());
+            RunFailure f = result.failure();
+            ObjectNode err = JSON.createObjectNode();
+            err.put("bundle", slot.unit().slotName());
+            err.put("stage", f.stage().name().toLowerCase(java.util.Locale.ROOT));
+            err.put("kind", f.kind());
+            err.put("message", f.message());
+            err.put("bad_input", f.badInput());
+            err.put("time", clock.instant().toString());
+            try {
+                ReportJson.writeAtomically(layout.failed().resolve(dest.getFileName() + ".error.json"),
+                        JSON.writeValueAsString(err) + "\n");
+            } catch (com.fasterxml.jackson.core.JsonProcessingException e) {
+                throw new IllegalStateException(e);
+            }
+            slot.moveTo(dest);
+            LOG.warn("failed bundle={} stage={} kind={} message=\"{}\"", slot.unit().slotName(),
+                    err.get("stage").asText(), f.kind(), f.message());
+        } else {
+            slot.moveTo(slot.destination(layout.done()));
+            LOG.info("{} run_id={} version={} bundle={} report={}", result.outcome().label(), result.runId(),
+                    result.version(), slot.unit().slotName(), result.report());
+        }
+    }
+}

@@ -1,0 +1,49 @@
+package org.trajeval.pipeline;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.trajeval.core.InputException;
+import org.trajeval.core.InputProblem;
+import org.trajeval.core.report.EvaluationReport;
+
+class CoreRunScorerTest {
+    /** Identical files: every error is exactly 0 up to rounding of the alignment (m). */
+    private static final double ZERO_TOL_M = 1e-9;
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void identicalTrajectoriesScoreZeroAteWithTheRealEngine() {
+        assumeTrue(TestScorers.coreAvailable(), "core engine not merged: real scorer test SKIPPED");
+        Fixtures.writeTrajectory(dir.resolve("gt.csv"), 200, 0.0, 1);
+        Fixtures.writeTrajectory(dir.resolve("est.csv"), 200, 0.0, 1);
+        EvaluationReport r = new CoreRunScorer(1 << 20).score(new RunJob(RunMetadata.ofName("r"), dir.resolve("gt.csv"),
+                dir.resolve("est.csv"), MetricSettings.DEFAULTS, "test"));
+        assertEquals(0.0, r.ate().transM().rmse(), ZERO_TOL_M);
+        assertEquals("lesson", r.convention());
+        assertEquals(200, r.inputs().reference().poses());
+    }
+
+    @Test
+    void runSettingsOverrideTheConventionPreset() {
+        var o = CoreRunScorer.options(new MetricSettings("evo", "se2", null, 0.02, 5.0, "frames"));
+        assertEquals(org.trajeval.core.align.AlignmentModel.SE2, o.alignment());
+        assertEquals(0.02, o.maxDiffS());
+        assertEquals(5.0, o.rpeDelta());
+        assertEquals(org.trajeval.core.metric.RpeUnit.FRAMES, o.rpeUnit());
+    }
+
+    @Test
+    void unknownSettingIsRefusedNamingTheField() {
+        InputException e = assertThrows(InputException.class,
+                () -> new MetricSettings(null, "se4", null, null, null, null));
+        assertEquals("metrics.alignment", e.column());
+        assertEquals(InputProblem.INVALID_CONFIGURATION, e.problem());
+    }
+}

@@ -1,0 +1,123 @@
+package org.trajeval.pipeline.dir;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Random;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.trajeval.pipeline.Fixtures;
+import org.trajeval.pipeline.PipelineCommand;
+import org.trajeval.pipeline.ledger.Ledger;
+import org.trajeval.pipeline.ledger.LedgerEntry;
+
+/**
+ * The service, as a child JVM, is killed with SIGKILL at seeded random times while it works on 100
+ * bundles, restarted, killed again, ...; a final {@code watch --drain} finishes. In the end every
+ * run has exactly one report, every report parses, and nothing is left in incoming/ or processing/.
+ */
+class CrashSafetyTest {
+    private static final ObjectMapper JSON = new ObjectMapper();
+    private static final int BUNDLES = 100;
+    private static final int KILLS = 6;
+
+    @TempDir
+    Path root;
+
+    private Process start(List<String> jvmArgs, String... args) throws IOException {
+        List<String> cmd = new ArrayList<>();
+        cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        cmd.add("-Xmx256m");
+        cmd.add("-XX:TieredStopAtLevel=1");
+        cmd.addAll(jvmArgs);
+        cmd.add("-cp");
+        cmd.add(System.getProperty("trajeval.testClasspath", System.getProperty("java.class.path")));
+        cmd.add(PipelineCommand.class.getName());
+        cmd.addAll(List.of(args));
+        return new ProcessBuilder(cmd).redirectErrorStream(true)
+                .redirectOutput(ProcessBuilder.Redirect.appendTo(root.resolve("child.log").toFile())).start();
+    }
+
+    @Test
+    void killedAndRestartedRepeatedlyEveryRunEndsWithExactlyOneCompleteReport() throws Exception {
+        DirectoryLayout layout = new DirectoryLayout(root.resolve("svc")).create();
+        for (int i = 0; i < BUNDLES; i++) {
+            String runId = "run-" + i;
+            switch (i % 3) {
+                case 0 -> Fixtures.folderBundle(layout.incoming(), "b-" + i, runId, 200, i);
+                case 1 -> Fixtures.zipBundle(layout.incoming(), "b-" + i, runId, 200, i);
+                default -> Fixtures.pair(layout.incoming(), runId, 200, i);
+            }
+            Fixtures.marker(layout.incoming(), i % 3 == 2 ? runId : "b-" + i);
+        }
+        Random rnd = new Random(7321L);
+        String svc = layout.root().toString();
+        List<Integer> progress = new ArrayList<>();
+        for (int k = 0; k < KILLS; k++) {
+            Process p = start(List.of(), "watch", "--root", svc, "--no-http", "--workers", "2");
+            Thread.sleep(600 + rnd.nextInt(1200));
+            p.destroyForcibly();
+            assertTrue(p.waitFor(30, TimeUnit.SECONDS));
+            progress.add(list(layout.done()).size());
+        }
+        System.err.println("CrashSafetyTest: bundles done after each SIGKILL: " + progress);
+        // the kills must have hit a service at work, or the test would prove nothing
+        assertTrue(progress.get(0) < BUNDLES, "the first kill came after all the work: " + progress);
+        Path classLog = root.resolve("classes.log");
+        Process last = start(List.of("-Xlog:class+load=info:file=" + classLog), "watch", "--root", svc, "--drain",
+                "--workers", "2");
+        assertTrue(last.waitFor(180, TimeUnit.SECONDS), "the final drain must finish");
+        assertEquals(0, last.exitValue(), () -> log());
+
+        Map<String, Integer> reports = new HashMap<>();
+        try (Stream<Path> s = Files.list(layout.reports())) {
+            for (Path p : s.filter(p -> !p.getFileName().toString().startsWith(".")).collect(Collectors.toList())) {
+                JsonNode r = JSON.readTree(p.toFile()); // throws on a truncated file
+                assertEquals(p.getFileName().toString(), r.get("run_id").asText() + ".json");
+                assertTrue(r.get("evaluation").get("ate").get("trans_m").get("rmse").isNumber());
+                reports.merge(r.get("run_id").asText(), 1, Integer::sum);
+            }
+        }
+        assertEquals(BUNDLES, reports.size(), "one report per run");
+        assertTrue(reports.values().stream().allMatch(n -> n == 1));
+        try (Ledger ledger = Ledger.open(layout.ledger())) {
+            ledger.locked(v -> null);
+            List<LedgerEntry> entries = ledger.entries();
+            assertEquals(BUNDLES, entries.stream().map(LedgerEntry::runId).distinct().count());
+            assertTrue(entries.stream().allMatch(e -> e.version() == 1), "no run may get a second version");
+        }
+        assertEquals(0, list(layout.incoming()).size());
+        assertEquals(List.of(), list(layout.processing()));
+        assertEquals(List.of(), list(layout.failed()));
+        // the directory mode runs without any Kafka class
+        assertFalse(Files.readString(classLog).contains("org.apache.kafka"), "Kafka classes were loaded");
+    }
+
+    private static List<String> list(Path dir) throws IOException {
+        try (Stream<Path> s = Files.list(dir)) {
+            return s.map(p -> p.getFileName().toString()).collect(Collectors.toList());
+        }
+    }
+
+    private String log() {
+        try {
+            return Files.readString(root.resolve("child.log"));
+        } catch (IOException e) {
+            return e.toString();
+        }
+    }
+
+}

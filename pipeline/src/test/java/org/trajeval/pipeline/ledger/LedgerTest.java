@@ -1,0 +1,68 @@
+package org.trajeval.pipeline.ledger;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class LedgerTest {
+    @TempDir
+    Path dir;
+
+    @Test
+    void entriesSurviveARestart() {
+        Path f = dir.resolve("ledger.log");
+        try (Ledger l = Ledger.open(f)) {
+            l.locked(v -> {
+                v.append(new LedgerEntry("r1", "h1", 1, 10, "b1"));
+                v.append(new LedgerEntry("r1", "h2", 2, 20, "b2"));
+                return null;
+            });
+        }
+        try (Ledger l = Ledger.open(f)) {
+            assertEquals(2, (int) l.locked(v -> v.latestVersion("r1")));
+            assertTrue(l.locked(v -> v.find("r1", "h2")).isPresent());
+            assertEquals(0, (int) l.locked(v -> v.latestVersion("r2")));
+        }
+    }
+
+    @Test
+    void aLineCutShortByACrashIsIgnoredAndCutOff() throws IOException {
+        Path f = dir.resolve("ledger.log");
+        try (Ledger l = Ledger.open(f)) {
+            l.locked(v -> {
+                v.append(new LedgerEntry("r1", "h1", 1, 10, "b1"));
+                return null;
+            });
+        }
+        Files.writeString(f, "R\tr2\th9\t1\t3", StandardOpenOption.APPEND); // no newline: the append never finished
+        try (Ledger l = Ledger.open(f)) {
+            assertTrue(l.locked(v -> v.find("r2", "h9")).isEmpty());
+            l.locked(v -> {
+                v.append(new LedgerEntry("r3", "h3", 1, 30, "b3"));
+                return null;
+            });
+        }
+        assertEquals(2, Files.readAllLines(f).size());
+        try (Ledger l = Ledger.open(f)) {
+            assertTrue(l.locked(v -> v.find("r3", "h3")).isPresent());
+        }
+    }
+
+    @Test
+    void twoLedgersOnOneFileSeeEachOthersAppends() {
+        Path f = dir.resolve("ledger.log");
+        try (Ledger a = Ledger.open(f); Ledger b = Ledger.open(f)) {
+            a.locked(v -> {
+                v.append(new LedgerEntry("r1", "h1", 1, 10, "a"));
+                return null;
+            });
+            assertEquals(1, (int) b.locked(v -> v.latestVersion("r1")));
+        }
+    }
+}
