@@ -8,6 +8,7 @@
 #
 # --max-evo N: largest pair evo is timed on (evo on 10^7 poses takes ~5 min and ~13 GiB per run).
 # --max-check N: largest 3D pair on which trajeval's evo convention is checked against evo.
+# --recheck: only re-run the agreement checks on the outputs of the last run (no timing).
 # Needs python3 with venv, /usr/bin/time, taskset; PyPI for the first run (evo, numpy, pandas).
 set -euo pipefail
 cd "$(dirname "$0")/.."
