@@ -1,0 +1,274 @@
+"""Runs trajeval, the vectorised numpy lesson and evo alternately on the same seeded files,
+checks their numbers agree where their conventions agree, and writes the table.
+
+Timing: /usr/bin/time -v around each process (wall clock and peak RSS), R runs per tool and
+size, tools alternated (the starting tool rotates each run), median reported. Throughput is
+estimate poses / median wall time; memory per pose is (peak RSS - RSS of the same tool on a
+1000-pose pair) / poses.  Called by bench/run-benchmarks.sh, which prepares the venv and build.
+"""
+import argparse
+import datetime
+import json
+import os
+import platform
+import re
+import statistics
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+LESSON_OPTS = ["--convention", "lesson", "--association", "interpolate", "--align", "se2",
+               "--rpe-delta", "1", "--rpe-unit", "s", "--json"]
+
+
+def sh(cmd, **kw):
+    return subprocess.run(cmd, check=True, **kw)
+
+
+def timed(cmd, out_path, log_path, env=None):
+    """Runs cmd under /usr/bin/time -v; returns (wall s, peak RSS bytes)."""
+    tfile = log_path + ".time"
+    with open(out_path, "w") as out, open(log_path, "w") as err:
+        r = subprocess.run(["/usr/bin/time", "-v", "-o", tfile] + cmd, stdout=out, stderr=err, env=env)
+    if r.returncode != 0:
+        raise SystemExit(f"failed ({r.returncode}): {' '.join(cmd)}; see {log_path}")
+    text = open(tfile).read()
+    wall = re.search(r"Elapsed \(wall clock\) time \(h:mm:ss or m:ss\): (\S+)", text).group(1)
+    parts = [float(p) for p in wall.split(":")]
+    secs = parts[-1] + 60 * parts[-2] + (3600 * parts[-3] if len(parts) > 2 else 0)
+    rss = int(re.search(r"Maximum resident set size \(kbytes\): (\d+)", text).group(1)) * 1024
+    return secs, rss
+
+
+def fmt_n(n):
+    e = len(str(n)) - 1
+    return f"10^{e}" if n == 10 ** e else str(n)
+
+
+class Bench:
+    def __init__(self, a):
+        self.a = a
+        self.py = a.python
+        self.data = os.path.abspath(a.data)
+        self.work = os.path.abspath(a.results)
+        os.makedirs(self.data, exist_ok=True)
+        os.makedirs(self.work, exist_ok=True)
+        self.evo_bin = os.path.dirname(self.py)
+
+    def gen(self, n, kind):
+        names = {"planar": f"planar_{n}_est.csv", "planar-tum": f"planar_{n}_est.tum",
+                 "spatial": f"spatial_{n}_est.tum"}
+        if not os.path.exists(os.path.join(self.data, names[kind])):
+            print(f"  generating {kind} pair of {fmt_n(n)} poses", flush=True)
+            sh([self.py, os.path.join(HERE, "generate.py"), self.data, str(n), "--kind", kind,
+                "--seed", str(self.a.seed)])
+
+    def tools(self, n):
+        d = self.data
+        ref, est = f"{d}/planar_{n}_ref.csv", f"{d}/planar_{n}_est.csv"
+        t = self.a.trajeval
+        tools = {
+            "trajeval (1 core)": [["taskset", "-c", "0", t, "eval", ref, est, "--threads", "1"] + LESSON_OPTS],
+            "trajeval (2 cores)": [[t, "eval", ref, est, "--threads", "2"] + LESSON_OPTS],
+            "numpy lesson": [[self.py, os.path.join(HERE, "lesson_numpy.py"), ref, est]],
+        }
+        if n <= self.a.max_evo:
+            rt, et = f"{d}/planar_{n}_ref.tum", f"{d}/planar_{n}_est.tum"
+            tools["evo (ape + rpe)"] = [
+                [f"{self.evo_bin}/evo_ape", "tum", rt, et, "-a", "--no_warnings"],
+                [f"{self.evo_bin}/evo_rpe", "tum", rt, et, "-a", "--delta", "100", "--delta_unit", "f",
+                 "--no_warnings"]]
+        return tools
+
+    def run_tool(self, name, cmds, n, run):
+        wall, rss = 0.0, 0
+        slug = re.sub(r"[^a-z0-9]+", "-", name.lower()).strip("-")
+        for k, cmd in enumerate(cmds):
+            base = f"{self.work}/{slug}_{n}_{run}_{k}"
+            w, r = timed(cmd, base + ".out", base + ".log")
+            wall += w
+            rss = max(rss, r)
+        return wall, rss, f"{self.work}/{slug}_{n}_{run}_0.out"
+
+    def baseline(self):
+        n = 1000
+        self.gen(n, "planar")
+        self.gen(n, "planar-tum")
+        base = {}
+        for name, cmds in self.tools(n).items():
+            rs = [self.run_tool(name, cmds, n, r)[1] for r in range(3)]
+            base[name] = statistics.median(rs)
+        return base
+
+    def agreement(self, n, outputs):
+        res = {}
+        t, p = outputs.get("trajeval (1 core)"), outputs.get("numpy lesson")
+        r = subprocess.run([self.py, os.path.join(HERE, "compare.py"), "lesson", t, p],
+                           capture_output=True, text=True)
+        res["lesson"] = {"ok": r.returncode == 0, "detail": r.stdout.strip()}
+        if n <= self.a.max_check:
+            self.gen(n, "spatial")
+            d, w = self.data, self.work
+            rt, et = f"{d}/spatial_{n}_ref.tum", f"{d}/spatial_{n}_est.tum"
+            tj = f"{w}/check_{n}_trajeval.json"
+            with open(tj, "w") as f:
+                sh([self.a.trajeval, "eval", rt, et, "--convention", "evo", "--align", "se3", "--format", "tum",
+                    "--json"], stdout=f)
+            for z in (f"{w}/check_{n}_ape.zip", f"{w}/check_{n}_rpe.zip"):
+                if os.path.exists(z):
+                    os.remove(z)
+            sh([f"{self.evo_bin}/evo_ape", "tum", rt, et, "-a", "--no_warnings", "--save_results",
+                f"{w}/check_{n}_ape.zip"], stdout=subprocess.DEVNULL)
+            sh([f"{self.evo_bin}/evo_rpe", "tum", rt, et, "-a", "--delta", "1", "--delta_unit", "f",
+                "--no_warnings", "--save_results", f"{w}/check_{n}_rpe.zip"], stdout=subprocess.DEVNULL)
+            r = subprocess.run([self.py, os.path.join(HERE, "compare.py"), "evo", tj,
+                                f"{w}/check_{n}_ape.zip", f"{w}/check_{n}_rpe.zip"], capture_output=True, text=True)
+            res["evo"] = {"ok": r.returncode == 0, "detail": r.stdout.strip()}
+        return res
+
+    def recheck(self):
+        """Re-runs the agreement checks on the outputs of the last timed run (no new timing)."""
+        path = os.path.join(self.work, "bench.json")
+        result = json.load(open(path))
+        checks = {}
+        for n in sorted({row["poses"] for row in result["rows"]}):
+            last = result["runs"] - 1
+            outputs = {"trajeval (1 core)": f"{self.work}/trajeval-1-core_{n}_{last}_0.out",
+                       "numpy lesson": f"{self.work}/numpy-lesson_{n}_{last}_0.out"}
+            checks[n] = self.agreement(n, outputs)
+            for k, v in checks[n].items():
+                print(f"  {fmt_n(n):>5} agreement with {k}: {'OK' if v['ok'] else 'MISMATCH'}\n" + v["detail"])
+        result["agreement"] = {str(k): v for k, v in checks.items()}
+        result["agreement_rechecked"] = datetime.datetime.now().astimezone().isoformat(timespec="seconds")
+        self.finish(result, checks)
+
+    def finish(self, result, checks):
+        with open(os.path.join(self.work, "bench.json"), "w") as f:
+            json.dump(result, f, indent=1)
+        table = markdown(result)
+        with open(os.path.join(self.work, "bench.md"), "w") as f:
+            f.write(table)
+        print(table)
+        if self.a.readme:
+            splice(self.a.readme, table)
+        if not all(v["ok"] for c in checks.values() for v in c.values()):
+            sys.exit(1)
+
+    def main(self):
+        a = self.a
+        if a.recheck:
+            self.recheck()
+            return
+        print("baseline: each tool on a 1000-pose pair", flush=True)
+        base = self.baseline()
+        rows, checks = [], {}
+        for n in a.sizes:
+            self.gen(n, "planar")
+            if n <= a.max_evo:
+                self.gen(n, "planar-tum")
+            tools = self.tools(n)
+            names = list(tools)
+            samples = {k: [] for k in names}
+            outputs = {}
+            for run in range(a.runs):
+                order = names[run % len(names):] + names[:run % len(names)]
+                for name in order:
+                    w, r, out = self.run_tool(name, tools[name], n, run)
+                    samples[name].append((w, r))
+                    outputs[name] = out
+                    print(f"  {fmt_n(n):>5} run {run + 1}/{a.runs} {name:20s} {w:8.2f} s "
+                          f"{r / 2**20:8.0f} MiB", flush=True)
+            checks[n] = self.agreement(n, outputs)
+            for k, v in checks[n].items():
+                print(f"  {fmt_n(n):>5} agreement with {k}: {'OK' if v['ok'] else 'MISMATCH'}\n" + v["detail"])
+            t_ref = statistics.median(w for w, _ in samples["trajeval (1 core)"])
+            for name in names:
+                wall = statistics.median(w for w, _ in samples[name])
+                rss = statistics.median(r for _, r in samples[name])
+                rows.append({"poses": n, "tool": name, "median_wall_s": wall,
+                             "walls_s": [w for w, _ in samples[name]], "peak_rss_bytes": rss,
+                             "poses_per_s": n / wall, "bytes_per_pose_above_baseline": (rss - base[name]) / n,
+                             "baseline_rss_bytes": base[name], "time_ratio_vs_trajeval_1core": wall / t_ref})
+        result = {"date": datetime.datetime.now().astimezone().isoformat(timespec="seconds"),
+                  "machine": machine(), "runs": a.runs, "max_evo": a.max_evo, "max_check": a.max_check,
+                  "seed": a.seed, "rows": rows, "agreement": {str(k): v for k, v in checks.items()}}
+        self.finish(result, checks)
+
+
+def machine():
+    cpu = open("/proc/cpuinfo").read()
+    model = re.search(r"model name\s*:\s*(.*)", cpu).group(1).strip()
+    cores = len(re.findall(r"^processor\s*:", cpu, re.M))
+    mem = subprocess.run(["free", "-h"], capture_output=True, text=True).stdout.splitlines()[1].split()[1]
+    java = subprocess.run(["java", "-version"], capture_output=True, text=True).stderr.splitlines()[1].strip()
+    vers = {}
+    for mod in ("numpy", "pandas", "evo"):
+        try:
+            vers[mod] = __import__(mod).__version__
+        except Exception:  # a missing module is reported, not fatal
+            vers[mod] = "?"
+    return {"cpu": model, "logical_cpus": cores, "memory": mem, "os": platform.platform(), "java": java,
+            "python": platform.python_version(), **vers}
+
+
+def markdown(r):
+    m = r["machine"]
+    lines = [f"Measured {r['date']} on {m['cpu']}, {m['logical_cpus']} logical CPUs, {m['memory']} RAM, "
+             f"{m['os']}; {m['java']}; Python {m['python']}, numpy {m['numpy']}, pandas {m['pandas']}, "
+             f"evo {m['evo']}. Median of {r['runs']} runs per tool and size, tools alternated; "
+             f"evo run up to {fmt_n(r['max_evo'])} poses (`--max-evo`).",
+             "",
+             "| poses | tool | median wall (s) | poses/s | peak RSS (MiB) | B/pose above baseline | time / trajeval (1 core) |",
+             "| ---: | --- | ---: | ---: | ---: | ---: | ---: |"]
+    for row in r["rows"]:
+        lines.append(f"| {fmt_n(row['poses'])} | {row['tool']} | {row['median_wall_s']:.2f} | "
+                     f"{row['poses_per_s']:,.0f} | {row['peak_rss_bytes'] / 2**20:,.0f} | "
+                     f"{row['bytes_per_pose_above_baseline']:,.0f} | {row['time_ratio_vs_trajeval_1core']:.1f}x |")
+    lines.append("")
+    lines.append("Baselines (peak RSS on a 1000-pose pair): " + ", ".join(
+        f"{row['tool']} {row['baseline_rss_bytes'] / 2**20:.0f} MiB" for row in r["rows"]
+        if row["poses"] == r["rows"][0]["poses"]) + ".")
+    lines.append("")
+    lines.append("Agreement (" + ("re-checked on the same outputs " + r["agreement_rechecked"]
+                                  if "agreement_rechecked" in r else "checked in the same run") + "):")
+    for n, c in r["agreement"].items():
+        for k, v in c.items():
+            what = ("trajeval --convention lesson vs numpy lesson (planar CSV)" if k == "lesson"
+                    else "trajeval --convention evo --align se3 vs evo_ape -a / evo_rpe -a --delta 1 --delta_unit f (3D TUM)")
+            worst = max((float(x) for x in re.findall(r"difference ([0-9.e+-]+)", v["detail"])), default=0.0)
+            lines.append(f"- {fmt_n(int(n))}: {what}: {'agree' if v['ok'] else 'MISMATCH'}, "
+                         f"worst relative difference {worst:.1e}")
+    return "\n".join(lines) + "\n"
+
+
+def splice(readme, table):
+    start, end = "<!-- bench-table:start -->", "<!-- bench-table:end -->"
+    text = open(readme).read()
+    i, j = text.find(start), text.find(end)
+    if i < 0 or j < 0:
+        raise SystemExit(f"{readme}: markers {start} / {end} not found")
+    with open(readme, "w") as f:
+        f.write(text[:i + len(start)] + "\n" + table + text[j:])
+
+
+def parse_args():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--trajeval", required=True)
+    ap.add_argument("--python", default=sys.executable)
+    ap.add_argument("--sizes", default="10000,100000,1000000,10000000")
+    ap.add_argument("--runs", type=int, default=3)
+    ap.add_argument("--max-evo", type=int, default=1_000_000)
+    ap.add_argument("--max-check", type=int, default=100_000)
+    ap.add_argument("--seed", type=int, default=20240605)
+    ap.add_argument("--data", default="bench/data")
+    ap.add_argument("--results", default="bench/results")
+    ap.add_argument("--readme", default=None)
+    ap.add_argument("--recheck", action="store_true",
+                    help="re-run only the agreement checks on the saved outputs of the last run")
+    a = ap.parse_args()
+    a.sizes = [int(float(s)) for s in a.sizes.split(",")]
+    return a
+
+
+if __name__ == "__main__":
+    Bench(parse_args()).main()
