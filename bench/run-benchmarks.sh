@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Benchmarks trajeval against evo and the vectorised numpy version of the lesson's algorithm on
 # the same seeded files, checks that their numbers agree, and writes the table into
-# docs/readme/bench.md (between the bench-table markers) and bench/results/bench.{md,json}.
+# README.md (between the bench-table markers) and bench/results/bench.{md,json}.
 #
 #   bench/run-benchmarks.sh [--sizes 10000,100000,1000000,10000000] [--runs 3]
 #                           [--max-evo 1000000] [--max-check 100000] [--no-readme]
@@ -12,7 +12,7 @@
 # Needs python3 with venv, /usr/bin/time, taskset; PyPI for the first run (evo, numpy, pandas).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-readme=(--readme docs/readme/bench.md)
+readme=(--readme README.md)
 args=()
 for a in "$@"; do
   if [ "$a" = "--no-readme" ]; then readme=(); else args+=("$a"); fi

@@ -21,7 +21,7 @@ import org.trajeval.core.io.TrajectoryReader;
  *
  * <p>In a normal test run (regression mode) each target replays its committed corpus from
  * {@code src/test/resources/org/trajeval/core/fuzz/ReaderFuzzTestInputs/<method>/}. With
- * {@code JAZZER_FUZZ=1} Jazzer mutates inputs under coverage feedback (see docs/readme/bench.md).
+ * {@code JAZZER_FUZZ=1} Jazzer mutates inputs under coverage feedback (see README.md).
  *
  * <p>The first bytes of an input choose the read options (order and duplicate policies, CSV
  * delimiter and time unit, a KITTI times file, tight limits), so the fuzzer explores them too.
