@@ -33,6 +33,8 @@ class CrashSafetyTest {
     private static final ObjectMapper JSON = new ObjectMapper();
     private static final int BUNDLES = 100;
     private static final int KILLS = 6;
+    /** Poses per run: enough work per bundle that kills land while runs are in flight. */
+    private static final int POSES = 2000;
 
     @TempDir
     Path root;
@@ -57,9 +59,9 @@ class CrashSafetyTest {
         for (int i = 0; i < BUNDLES; i++) {
             String runId = "run-" + i;
             switch (i % 3) {
-                case 0 -> Fixtures.folderBundle(layout.incoming(), "b-" + i, runId, 200, i);
-                case 1 -> Fixtures.zipBundle(layout.incoming(), "b-" + i, runId, 200, i);
-                default -> Fixtures.pair(layout.incoming(), runId, 200, i);
+                case 0 -> Fixtures.folderBundle(layout.incoming(), "b-" + i, runId, POSES, i);
+                case 1 -> Fixtures.zipBundle(layout.incoming(), "b-" + i, runId, POSES, i);
+                default -> Fixtures.pair(layout.incoming(), runId, POSES, i);
             }
             Fixtures.marker(layout.incoming(), i % 3 == 2 ? runId : "b-" + i);
         }
@@ -68,7 +70,14 @@ class CrashSafetyTest {
         List<Integer> progress = new ArrayList<>();
         for (int k = 0; k < KILLS; k++) {
             Process p = start(List.of(), "watch", "--root", svc, "--no-http", "--workers", "2");
-            Thread.sleep(600 + rnd.nextInt(1200));
+            // kill at a random moment once this instance is at work (its first new report), so that
+            // a fast, quiet machine cannot finish everything before the first kill
+            int before = list(layout.reports()).size();
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+            while (list(layout.reports()).size() == before && p.isAlive() && System.nanoTime() < deadline) {
+                Thread.sleep(5);
+            }
+            Thread.sleep(rnd.nextInt(250));
             p.destroyForcibly();
             assertTrue(p.waitFor(30, TimeUnit.SECONDS));
             progress.add(list(layout.done()).size());
