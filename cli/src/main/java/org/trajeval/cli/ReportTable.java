@@ -37,6 +37,9 @@ final class ReportTable {
         sb.append(String.format(Locale.ROOT, "alignment  %s on %d poses: translation (%.4f, %.4f, %.4f) m, yaw %.4f deg,"
                 + " scale %.6f%n", al.model(), al.posesUsed(), al.translationM()[0], al.translationM()[1],
                 al.translationM()[2], yaw, al.scale()));
+        if (r.drift() != null && "kitti".equals(r.convention())) {
+            sb.append(drift(r.drift())); // the KITTI convention's headline
+        }
         sb.append(System.lineSeparator());
         sb.append(String.format(Locale.ROOT, "%-16s %12s %12s %12s %12s %12s %12s %8s%n", "metric", "rmse", "mean",
                 "median", "std", "min", "max", "n"));
@@ -53,14 +56,16 @@ final class ReportTable {
                     rpe.meanHorizonM()));
         }
         sb.append(System.lineSeparator());
-        if (r.drift() != null) {
-            EvaluationReport.Drift d = r.drift();
-            sb.append(String.format(Locale.ROOT, "drift: %s %% translation, %s deg/m rotation over %d segments%n",
-                    d.transPct() == null ? "n/a" : String.format(Locale.ROOT, "%.4f", d.transPct()),
-                    d.rotDegPerM() == null ? "n/a" : String.format(Locale.ROOT, "%.6f", d.rotDegPerM()),
-                    d.segments()));
+        if (r.drift() != null && !"kitti".equals(r.convention())) {
+            sb.append(drift(r.drift()));
         }
         return sb.toString();
+    }
+
+    private static String drift(EvaluationReport.Drift d) {
+        return String.format(Locale.ROOT, "drift: %s %% translation, %s deg/m rotation over %d segments%n",
+                d.transPct() == null ? "n/a" : String.format(Locale.ROOT, "%.4f", d.transPct()),
+                d.rotDegPerM() == null ? "n/a" : String.format(Locale.ROOT, "%.6f", d.rotDegPerM()), d.segments());
     }
 
     private static void row(StringBuilder sb, String name, EvaluationReport.Stats s, double k) {
