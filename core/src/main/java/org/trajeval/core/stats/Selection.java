@@ -82,46 +82,6 @@ final class Selection {
         return new double[] {below, kth};
     }
 
-    /**
-     * The k-th smallest (0-based) of non-negative values, by successive 16-bit digits of their
-     * bits, most significant first, until at most {@link #SMALL} candidates remain.
-     */
-    static double radixSelect(double[] a, int n, int k) {
-        long prefix = 0L;
-        int shift = 64;
-        int rank = k;
-        int candidates = n;
-        int[] count = new int[BUCKETS];
-        while (candidates > SMALL && shift > 0) {
-            shift -= RADIX_BITS;
-            java.util.Arrays.fill(count, 0);
-            long mask = shift + RADIX_BITS >= 64 ? 0L : (-1L << (shift + RADIX_BITS));
-            for (int i = 0; i < n; i++) {
-                long bits = Double.doubleToRawLongBits(a[i]);
-                if ((bits & mask) == prefix) {
-                    count[(int) ((bits >>> shift) & (BUCKETS - 1))]++;
-                }
-            }
-            int digit = 0;
-            while (rank >= count[digit]) {
-                rank -= count[digit];
-                digit++;
-            }
-            prefix |= ((long) digit) << shift;
-            candidates = count[digit];
-        }
-        long mask = shift >= 64 ? 0L : (-1L << shift);
-        double[] rest = new double[candidates];
-        int m = 0;
-        for (int i = 0; i < n && m < candidates; i++) {
-            if ((Double.doubleToRawLongBits(a[i]) & mask) == prefix) {
-                rest[m++] = a[i];
-            }
-        }
-        java.util.Arrays.sort(rest, 0, m);
-        return rest[rank];
-    }
-
     /** The median by quickselect; reorders the array. */
     static double medianBySwapping(double[] a, int n) {
         int k = n / 2;

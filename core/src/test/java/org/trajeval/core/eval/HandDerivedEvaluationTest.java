@@ -14,6 +14,7 @@ import org.trajeval.core.align.AlignmentModel;
 import org.trajeval.core.assoc.AssociationMethod;
 import org.trajeval.core.assoc.OverlapPolicy;
 import org.trajeval.core.metric.PairSelection;
+import org.trajeval.core.property.RandomTrajectories;
 import org.trajeval.core.metric.RpeUnit;
 import org.trajeval.core.report.EvaluationReport;
 import org.trajeval.core.traj.PlanarTrajectory;
@@ -46,7 +47,7 @@ class HandDerivedEvaluationTest {
         // the helix moved by a rotation about a tilted axis and a translation: se3 recovers it
         SpatialTrajectory truth = TestTrajectories.helix(400, 0.05);
         double[] q = {Math.cos(0.4), Math.sin(0.4) * 0.6, Math.sin(0.4) * 0.0, Math.sin(0.4) * 0.8};
-        SpatialTrajectory est = RigidMotion.apply(truth, q, new double[] {1.0, -2.0, 0.5}, 1.0);
+        SpatialTrajectory est = RandomTrajectories.moved(truth, q, new double[] {1.0, -2.0, 0.5}, 1.0);
         EvaluationReport r = Evaluator.evaluate(loaded("gt", truth), loaded("est", est),
                 EvaluationOptions.preset(Convention.LESSON, false));
         assertEquals(0.0, r.ate().transM().max(), 1e-8);
@@ -58,7 +59,7 @@ class HandDerivedEvaluationTest {
         // a monocular-like estimate at 0.5 x scale: sim3 finds scale 2 and zero error
         SpatialTrajectory truth = TestTrajectories.helix(400, 0.05);
         double[] q = {1, 0, 0, 0};
-        SpatialTrajectory est = RigidMotion.apply(truth, q, new double[] {0.3, 0.1, 0}, 0.5);
+        SpatialTrajectory est = RandomTrajectories.moved(truth, q, new double[] {0.3, 0.1, 0}, 0.5);
         EvaluationReport r = Evaluator.evaluate(loaded("gt", truth), loaded("est", est),
                 EvaluationOptions.preset(Convention.EVO).withAlignment(AlignmentModel.SIM3));
         assertEquals(2.0, r.alignment().scale(), 1e-12);

@@ -8,17 +8,17 @@ import org.trajeval.core.traj.SpatialTrajectory;
 import org.trajeval.core.traj.Trajectory;
 
 /** Seeded random smooth trajectories and rigid motions for the property checks. */
-final class RandomTrajectories {
+public final class RandomTrajectories {
     private RandomTrajectories() {
     }
 
-    static LoadedTrajectory loaded(String name, Trajectory t) {
+    public static LoadedTrajectory loaded(String name, Trajectory t) {
         return new LoadedTrajectory(name, t instanceof PlanarTrajectory ? TrajectoryFormat.CSV : TrajectoryFormat.TUM,
                 "test", t, "0", false);
     }
 
     /** A smooth planar path of n poses every dt s: sums of sines with random amplitudes and frequencies; yaw = heading. */
-    static PlanarTrajectory planarPath(Random rnd, int n, double dt) {
+    public static PlanarTrajectory planarPath(Random rnd, int n, double dt) {
         double ax = 1 + 5 * rnd.nextDouble();
         double ay = 1 + 5 * rnd.nextDouble();
         double wx = 0.05 + 0.3 * rnd.nextDouble();
@@ -40,7 +40,7 @@ final class RandomTrajectories {
     }
 
     /** The path with seeded Gaussian noise: sigma (m) on x, y and sigma (rad) on yaw. */
-    static PlanarTrajectory noisy(Random rnd, PlanarTrajectory a, double sigma) {
+    public static PlanarTrajectory noisy(Random rnd, PlanarTrajectory a, double sigma) {
         int n = a.size();
         double[] x = new double[n];
         double[] y = new double[n];
@@ -54,7 +54,7 @@ final class RandomTrajectories {
     }
 
     /** p -> R(theta) p + (tx, ty), yaw -> yaw + theta, for every pose. */
-    static PlanarTrajectory moved(PlanarTrajectory a, double theta, double tx, double ty) {
+    public static PlanarTrajectory moved(PlanarTrajectory a, double theta, double tx, double ty) {
         int n = a.size();
         double[] x = new double[n];
         double[] y = new double[n];
@@ -70,7 +70,7 @@ final class RandomTrajectories {
     }
 
     /** A random unit quaternion (w, x, y, z), uniform on the sphere. */
-    static double[] randomQuaternion(Random rnd) {
+    public static double[] randomQuaternion(Random rnd) {
         double[] q = {rnd.nextGaussian(), rnd.nextGaussian(), rnd.nextGaussian(), rnd.nextGaussian()};
         double norm = Math.sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
         for (int i = 0; i < 4; i++) {
@@ -80,11 +80,20 @@ final class RandomTrajectories {
     }
 
     /** A 3D path: a helix with random radii and pitch, orientation from a slowly varying yaw-pitch-roll. */
-    static SpatialTrajectory spatialPath(Random rnd, int n, double dt, double noise) {
+    public static SpatialTrajectory spatialPath(Random rnd, int n, double dt, double noise) {
         double rx = 1 + 4 * rnd.nextDouble();
         double ry = 1 + 4 * rnd.nextDouble();
         double w = 0.1 + 0.4 * rnd.nextDouble();
         double vz = 0.05 + 0.3 * rnd.nextDouble();
+        return helix(rnd, n, dt, rx, ry, w, vz, noise);
+    }
+
+    /**
+     * A helix x = rx cos(w s), y = ry sin(w s), z = vz s with heading w s, pitch 0.2 sin(0.5 s)
+     * and roll 0.1 cos(0.7 s) (quaternion from yaw-pitch-roll), plus seeded noise (m, rad).
+     */
+    public static SpatialTrajectory helix(Random rnd, int n, double dt, double rx, double ry, double w, double vz,
+            double noise) {
         double[] t = new double[n];
         double[] x = new double[n];
         double[] y = new double[n];
@@ -117,7 +126,7 @@ final class RandomTrajectories {
     }
 
     /** Rotation matrix (row-major 3x3) of a unit quaternion (w, x, y, z). */
-    static double[][] matrix(double[] q) {
+    public static double[][] matrix(double[] q) {
         double w = q[0];
         double x = q[1];
         double y = q[2];
@@ -129,7 +138,7 @@ final class RandomTrajectories {
     }
 
     /** p -> s R(q) p + t, q_i -> q q_i (Hamilton product) for every pose. */
-    static SpatialTrajectory moved(SpatialTrajectory a, double[] q, double[] t, double s) {
+    public static SpatialTrajectory moved(SpatialTrajectory a, double[] q, double[] t, double s) {
         int n = a.size();
         double[][] r = matrix(q);
         double[] px = new double[n];
