@@ -32,6 +32,111 @@ final class DecimalScanner {
      *     {@code from}, {@link #value()} holds the number (possibly infinite on overflow)
      */
     int scan(byte[] b, int from, int to) {
+        if (from + 40 <= b.length) {
+            int end = scanShort(b, from, to);
+            if (end != LONG_NUMBER) {
+                return end;
+            }
+        }
+        return scanAny(b, from, to);
+    }
+
+    /** Returned by {@link #scanShort} for a number it leaves to {@link #scanAny}. */
+    private static final int LONG_NUMBER = -1;
+    private static final long[] LONG_POWERS_OF_TEN = {
+        1L, 10L, 100L, 1_000L, 10_000L, 100_000L, 1_000_000L, 10_000_000L, 100_000_000L};
+    private static final long ZEROS = 0x3030303030303030L;
+    private static final long ABOVE_NINE = 0x7676767676767676L;
+    private static final long HIGH_BITS = 0x8080808080808080L;
+
+    /**
+     * The common case without a loop per digit: a run of up to eight digits is found and summed in
+     * one eight-byte word (SWAR), as in fast_float. Needs 40 readable bytes from {@code from}
+     * (a sign, two runs of up to 16 digits, a point), and handles numbers of at most 18 significant
+     * digits without an exponent on Clinger's exact path.
+     *
+     * @return as {@link #scan}, or {@link #LONG_NUMBER} for anything else
+     */
+    private int scanShort(byte[] b, int from, int to) {
+        int i = from;
+        boolean negative = false;
+        if (i < to && (b[i] == '-' || b[i] == '+')) {
+            negative = b[i] == '-';
+            i++;
+        }
+        long m = 0;
+        int digits = 0;
+        int intStart = i;
+        for (int run = 0; run < 2; run++) {
+            long t = (long) LONGS.get(b, i) - ZEROS;
+            int n = digitRun(t, to - i);
+            if (n == 0) {
+                break;
+            }
+            m = m * LONG_POWERS_OF_TEN[n] + sumDigits(t << ((8 - n) << 3));
+            i += n;
+            if (n < 8) {
+                break;
+            }
+        }
+        int intDigits = i - intStart;
+        int fracDigits = 0;
+        if (i < to && b[i] == '.') {
+            int j = i + 1;
+            for (int run = 0; run < 2; run++) {
+                long t = (long) LONGS.get(b, j) - ZEROS;
+                int n = digitRun(t, to - j);
+                if (n == 0) {
+                    break;
+                }
+                m = m * LONG_POWERS_OF_TEN[n] + sumDigits(t << ((8 - n) << 3));
+                j += n;
+                if (n < 8) {
+                    break;
+                }
+            }
+            fracDigits = j - i - 1;
+            if (intDigits + fracDigits > 0) {
+                i = j;
+            }
+        }
+        digits = intDigits + fracDigits;
+        if (digits == 0 || digits > 18 || (i < to && (b[i] >= '0' && b[i] <= '9' || b[i] == 'e' || b[i] == 'E'))) {
+            return LONG_NUMBER;
+        }
+        if (m == 0) {
+            value = negative ? -0.0 : 0.0;
+        } else if (m <= EXACT_SIGNIFICAND && fracDigits <= 22) {
+            double v = (double) m / POWERS_OF_TEN[fracDigits];
+            value = negative ? -v : v;
+        } else {
+            value = JavaDoubleParser.parseDouble(b, from, i - from);
+        }
+        return i;
+    }
+
+    /**
+     * @param t eight bytes minus '0' each, first byte lowest
+     * @param left bytes left before the end of the field
+     * @return how many of the leading bytes are digits (0..8, at most {@code left}); a byte is a
+     *     digit exactly when {@code t} holds 0..9 there: 10..127 gain the high bit when 0x76 is
+     *     added, 128..255 (and bytes below '0', which borrow) have it already. A borrow or carry
+     *     only travels upwards, past the first non-digit, so the lowest flagged byte is exact.
+     */
+    private static int digitRun(long t, int left) {
+        long nonDigits = ((t + ABOVE_NINE) | t) & HIGH_BITS;
+        return Math.min(Long.numberOfTrailingZeros(nonDigits) >>> 3, Math.max(left, 0));
+    }
+
+    /** @return the number whose decimal digits are the bytes of {@code d} (values 0..9, most significant lowest) */
+    private static long sumDigits(long d) {
+        d = (d * 10) + (d >>> 8);
+        return (((d & 0x000000FF000000FFL) * (100 + (1_000_000L << 32)))
+                + (((d >>> 16) & 0x000000FF000000FFL) * (1 + (10_000L << 32)))) >>> 32;
+    }
+
+    /** The general scan: any number of digits, exponents. */
+    private int scanAny(byte[] b, int from, int to) {
         int i = from;
         boolean negative = false;
         if (i < to && (b[i] == '-' || b[i] == '+')) {
