@@ -121,8 +121,9 @@ public final class EvalCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "FILE", description = "Write the JSON report to FILE (atomically).")
     Path out;
 
-    @Option(names = "--threads", paramLabel = "N", description = "Threads for reading the two files "
-            + "(default: ${DEFAULT-VALUE}; 1 reads them one after the other).", defaultValue = "2")
+    @Option(names = "--threads", paramLabel = "N", description = "Threads for reading the two files at once and "
+            + "for the element-wise passes of the planar evaluation (default: ${DEFAULT-VALUE}; 1 does everything on "
+            + "one thread). The numbers do not depend on it.", defaultValue = "2")
     int threads;
 
     @Option(names = "--verbose", description = "Print stack traces of errors.")
@@ -134,11 +135,13 @@ public final class EvalCommand implements Callable<Integer> {
         if (convention == Convention.EVO) {
             input.defaultDuplicates = org.trajeval.core.io.DuplicateTimestamps.KEEP;
         }
-        LoadedTrajectory[] pair = ParallelRead.both(input, reference, estimate, threads);
-        LoadedTrajectory ref = pair[0];
-        LoadedTrajectory est = pair[1];
-        EvaluationOptions options = options(ref, est);
-        EvaluationReport report = Evaluator.evaluate(ref, est, options);
+        EvaluationReport report;
+        try (EvalThreads work = new EvalThreads(threads)) {
+            LoadedTrajectory[] pair = work.both(input, reference, estimate);
+            LoadedTrajectory ref = pair[0];
+            LoadedTrajectory est = pair[1];
+            report = Evaluator.evaluate(ref, est, options(ref, est), work.parallelism());
+        }
         // JSON (and Jackson's start-up) only when asked for
         String jsonText = json || out != null ? ReportJson.toJson(report) : null;
         if (out != null) {

@@ -38,16 +38,16 @@ public final class ReferenceSampling {
         double vy0 = ref.y(lo) - ref.y(lo - 1);
         double vz0 = ref.z(lo) - ref.z(lo - 1);
         double h0 = t1 - t0;
+        double inv0 = 1.0 / h0;
         for (int k = lo; k <= hi; k++) {
             double t2 = ref.t(k + 1);
             double h1 = t2 - t1;
             double dx = ref.x(k + 1) - ref.x(k);
             double dy = ref.y(k + 1) - ref.y(k);
             double dz = ref.z(k + 1) - ref.z(k);
+            double inv1 = 1.0 / h1;
             if (h0 > 0.0 && h1 > 0.0) {
                 // a duplicate stamp (kept on request) says nothing about acceleration: skipped
-                double inv0 = 1.0 / h0;
-                double inv1 = 1.0 / h1;
                 double w = 2.0 / (h0 + h1);
                 double ax = w * (dx * inv1 - vx0 * inv0);
                 double ay = w * (dy * inv1 - vy0 * inv0);
@@ -56,6 +56,7 @@ public final class ReferenceSampling {
             }
             t1 = t2;
             h0 = h1;
+            inv0 = inv1;
             vx0 = dx;
             vy0 = dy;
             vz0 = dz;

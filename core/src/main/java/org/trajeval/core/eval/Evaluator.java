@@ -45,9 +45,19 @@ public final class Evaluator {
      */
     public static EvaluationReport evaluate(LoadedTrajectory reference, LoadedTrajectory estimate,
             EvaluationOptions options) {
+        return evaluate(reference, estimate, options, Parallelism.SEQUENTIAL);
+    }
+
+    /**
+     * As {@link #evaluate(LoadedTrajectory, LoadedTrajectory, EvaluationOptions)}, with the
+     * element-wise passes of the planar fast path (interpolation, errors, RPE pairs) spread over
+     * the given threads. The numbers do not depend on the thread count.
+     */
+    public static EvaluationReport evaluate(LoadedTrajectory reference, LoadedTrajectory estimate,
+            EvaluationOptions options, Parallelism parallelism) {
         if (PlanarEvaluator.applies(reference, estimate, options)) {
             PlanarEvaluator.ReportParts p = PlanarEvaluator.evaluate((PlanarTrajectory) reference.trajectory(),
-                    (PlanarTrajectory) estimate.trajectory(), options, estimate.source());
+                    (PlanarTrajectory) estimate.trajectory(), options, estimate.source(), parallelism);
             if (p != null) {
                 return report(reference, estimate, options, p.matched(), p.dropped(), 0, p.maxGapS(), p.aMaxMps2(),
                         p.alignment(), p.ateTrans(), p.ateRot(), p.rpeTrans(), p.rpeRot(), p.pairs(),

@@ -39,7 +39,8 @@ final class PlanarEvaluator {
     }
 
     /** @return the report, or {@code null} when the general path must decide (refusals, edge cases) */
-    static ReportParts evaluate(PlanarTrajectory ref, PlanarTrajectory est, EvaluationOptions o, String estName) {
+    static ReportParts evaluate(PlanarTrajectory ref, PlanarTrajectory est, EvaluationOptions o, String estName,
+            Parallelism par) {
         int nr = ref.size();
         int ne = est.size();
         if (nr < 2) {
@@ -60,32 +61,9 @@ final class PlanarEvaluator {
         if (m < 2 || (o.overlap() == OverlapPolicy.STRICT && m != ne)) {
             return null;
         }
+        Pair pair = new Pair(ref, est, k0, m, off);
         // ---- association: the reference interpolated at the estimate stamps (lesson's rule)
-        double[] xr = new double[m];
-        double[] yr = new double[m];
-        double[] yawr = new double[m];
-        int seg = 1;
-        int last = nr - 1;
-        double c0 = Math.cos(ref.yaw(0));
-        double s0 = Math.sin(ref.yaw(0));
-        double c1 = Math.cos(ref.yaw(1));
-        double s1 = Math.sin(ref.yaw(1));
-        for (int k = 0; k < m; k++) {
-            double t = est.t(k0 + k) + off;
-            while (seg < last && ref.t(seg) < t) {
-                seg++;
-                c0 = c1;
-                s0 = s1;
-                c1 = Math.cos(ref.yaw(seg));
-                s1 = Math.sin(ref.yaw(seg));
-            }
-            double ta = ref.t(seg - 1);
-            double f = (t - ta) / (ref.t(seg) - ta);
-            f = Math.max(0.0, Math.min(1.0, f));
-            xr[k] = ref.x(seg - 1) + f * (ref.x(seg) - ref.x(seg - 1));
-            yr[k] = ref.y(seg - 1) + f * (ref.y(seg) - ref.y(seg - 1));
-            yawr[k] = Math.atan2(s0 + f * (s1 - s0), c0 + f * (c1 - c0));
-        }
+        par.forEachChunk(m, (c, from, to) -> pair.interpolate(from, to));
         int spanLo = 0;
         while (spanLo + 1 < nr && ref.t(spanLo + 1) <= est.t(k0) + off) {
             spanLo++;
@@ -94,109 +72,317 @@ final class PlanarEvaluator {
         while (spanHi - 1 > spanLo && ref.t(spanHi - 1) >= est.t(k1 - 1) + off) {
             spanHi--;
         }
-        double maxGap = ReferenceSampling.maxGap(ref, spanLo, spanHi);
-        double aMax = ReferenceSampling.maxAcceleration(ref, spanLo, spanHi);
+        double[] sampling = referenceSampling(ref, spanLo, spanHi, par);
 
         // ---- alignment (closed form, same sums as the general path)
-        AlignmentTransform tf = fit(o, est, k0, m, xr, yr, yawr, estName);
-        double[] rot = tf.rotation();
-        double ca = rot[0];
-        double sa = rot[3];
-        double theta = Math.atan2(sa, ca);
-        double sc = tf.scale();
-        double[] tt = tf.translation();
-        double tx = tt[0];
-        double ty = tt[1];
+        AlignmentTransform tf = fit(o, est, k0, m, pair.xr, pair.yr, pair.dyaw, estName);
+        pair.setAlignment(tf);
 
         // ---- ATE
         double[] buf = new double[m];
-        for (int k = 0; k < m; k++) {
-            double px = sc * est.x(k0 + k);
-            double py = sc * est.y(k0 + k);
-            double ax = ca * px - sa * py + tx;
-            double ay = sa * px + ca * py + ty;
-            double dx = ax - xr[k];
-            double dy = ay - yr[k];
-            buf[k] = Math.sqrt(dx * dx + dy * dy);
-        }
+        par.forEachChunk(m, (c, from, to) -> pair.ateTrans(buf, from, to));
         ErrorStatistics ateTrans = ErrorStatistics.ofInPlace(buf, m);
-        for (int k = 0; k < m; k++) {
-            buf[k] = Math.abs(Angles.wrap(est.yaw(k0 + k) + theta - yawr[k]));
-        }
+        par.forEachChunk(m, (c, from, to) -> pair.ateRot(buf, from, to));
         ErrorStatistics ateRot = ErrorStatistics.ofInPlace(buf, m);
 
         // ---- RPE pairs on the estimate stamps (the pair rules of PairIndices, inlined)
-        PairWalk walk = new PairWalk(est, k0, m, off, o.rpeDelta(), o.rpeUnit(), o.pairSelection());
-        int pairs = 0;
-        double sumS = 0;
-        double sumM = 0;
-        double dI = 0; // reference path length from pose 0 to i (m)
-        double dJ = 0; // ... to j
-        int pathI = 0;
-        int pathJ = 0;
-        for (walk.start(); walk.next();) {
-            int i = walk.i();
-            int j = walk.j();
-            double ix = sc * est.x(k0 + i);
-            double iy = sc * est.y(k0 + i);
-            double jx = sc * est.x(k0 + j);
-            double jy = sc * est.y(k0 + j);
+        RpeParts rpe = o.pairSelection() == PairSelection.ALL_PAIRS && o.rpeDelta() > 0
+                ? pair.rpeEveryStart(buf, o.rpeDelta(), o.rpeUnit(), par)
+                : pair.rpeWalk(buf, new PairWalk(est, k0, m, off, o.rpeDelta(), o.rpeUnit(), o.pairSelection()));
+        return new ReportParts(m, ne - m, sampling[0], sampling[1], tf, ateTrans, ateRot, rpe.trans, rpe.rot,
+                rpe.pairs, rpe.pairs == 0 ? Double.NaN : rpe.sumS / rpe.pairs,
+                rpe.pairs == 0 ? Double.NaN : rpe.sumM / rpe.pairs);
+    }
+
+    /** @return {max gap (s), max acceleration (m/s^2)} of the reference over poses [lo, hi], chunk by chunk */
+    private static double[] referenceSampling(PlanarTrajectory ref, int lo, int hi, Parallelism par) {
+        int n = hi - lo + 1;
+        double[] gap = new double[Parallelism.chunks(n)];
+        double[] acc = new double[gap.length];
+        par.forEachChunk(n, (c, from, to) -> {
+            gap[c] = ReferenceSampling.maxGap(ref, lo + from, Math.min(lo + to, hi));
+            acc[c] = ReferenceSampling.maxAcceleration(ref, lo + from, lo + to - 1);
+        });
+        double h = 0.0;
+        double a = 0.0;
+        for (int c = 0; c < gap.length; c++) {
+            h = Math.max(h, gap[c]);
+            a = Math.max(a, acc[c]);
+        }
+        return new double[] {h, a};
+    }
+
+    /** RPE statistics and pair sums. */
+    private record RpeParts(ErrorStatistics trans, ErrorStatistics rot, int pairs, double sumS, double sumM) {
+    }
+
+    /**
+     * The associated pair: the estimate poses [k0, k0 + m) and the reference interpolated at their
+     * stamps (xr, yr in m; dyaw = estimate yaw - interpolated reference yaw, rad), and once fitted
+     * the alignment (rotation cos/sin, scale, translation in m).
+     */
+    private static final class Pair {
+        final PlanarTrajectory ref;
+        final PlanarTrajectory est;
+        final int k0;
+        final int m;
+        final double off;
+        final double[] xr;
+        final double[] yr;
+        final double[] dyaw;
+        double ca;
+        double sa;
+        double theta;
+        double sc;
+        double tx;
+        double ty;
+
+        Pair(PlanarTrajectory ref, PlanarTrajectory est, int k0, int m, double off) {
+            this.ref = ref;
+            this.est = est;
+            this.k0 = k0;
+            this.m = m;
+            this.off = off;
+            this.xr = new double[m];
+            this.yr = new double[m];
+            this.dyaw = new double[m];
+        }
+
+        /** Interpolates the reference at estimate poses [from, to): x, y linearly, yaw on the unit circle. */
+        void interpolate(int from, int to) {
+            int last = ref.size() - 1;
+            int seg = firstSegmentEndingAtOrAfter(est.t(k0 + from) + off);
+            double c0 = Math.cos(ref.yaw(seg - 1));
+            double s0 = Math.sin(ref.yaw(seg - 1));
+            double c1 = Math.cos(ref.yaw(seg));
+            double s1 = Math.sin(ref.yaw(seg));
+            for (int k = from; k < to; k++) {
+                double t = est.t(k0 + k) + off;
+                while (seg < last && ref.t(seg) < t) {
+                    seg++;
+                    c0 = c1;
+                    s0 = s1;
+                    c1 = Math.cos(ref.yaw(seg));
+                    s1 = Math.sin(ref.yaw(seg));
+                }
+                double ta = ref.t(seg - 1);
+                double f = (t - ta) / (ref.t(seg) - ta);
+                f = Math.max(0.0, Math.min(1.0, f));
+                xr[k] = ref.x(seg - 1) + f * (ref.x(seg) - ref.x(seg - 1));
+                yr[k] = ref.y(seg - 1) + f * (ref.y(seg) - ref.y(seg - 1));
+                dyaw[k] = est.yaw(k0 + k) - Math.atan2(s0 + f * (s1 - s0), c0 + f * (c1 - c0));
+            }
+        }
+
+        /** @return the smallest s in [1, last] with ref.t(s) &gt;= t, or last when there is none */
+        private int firstSegmentEndingAtOrAfter(double t) {
+            int lo = 1;
+            int hi = ref.size() - 1;
+            while (lo < hi) {
+                int mid = (lo + hi) >>> 1;
+                if (ref.t(mid) < t) {
+                    lo = mid + 1;
+                } else {
+                    hi = mid;
+                }
+            }
+            return lo;
+        }
+
+        void setAlignment(AlignmentTransform tf) {
+            double[] rot = tf.rotation();
+            ca = rot[0];
+            sa = rot[3];
+            theta = Math.atan2(sa, ca);
+            sc = tf.scale();
+            tx = tf.translation()[0];
+            ty = tf.translation()[1];
+        }
+
+        /** out[k] = |s R(theta) p_est,k + t - p_ref,k| (m) */
+        void ateTrans(double[] out, int from, int to) {
+            for (int k = from; k < to; k++) {
+                double px = sc * est.x(k0 + k);
+                double py = sc * est.y(k0 + k);
+                double dx = ca * px - sa * py + tx - xr[k];
+                double dy = sa * px + ca * py + ty - yr[k];
+                out[k] = Math.sqrt(dx * dx + dy * dy);
+            }
+        }
+
+        /** out[k] = |wrap(yaw_est,k + theta - yaw_ref,k)| (rad) */
+        void ateRot(double[] out, int from, int to) {
+            for (int k = from; k < to; k++) {
+                out[k] = Math.abs(Angles.wrap(dyaw[k] + theta));
+            }
+        }
+
+        /** @return |R(-delta_i)(p'_j - p'_i) - (p_ref,j - p_ref,i)| (m), delta_i the aligned yaw error at i */
+        double rpeTrans(int i, int j) {
             // p'_j - p'_i = s R(theta) (p_j - p_i): the translation cancels
-            double ex = jx - ix;
-            double ey = jy - iy;
+            double ex = sc * est.x(k0 + j) - sc * est.x(k0 + i);
+            double ey = sc * est.y(k0 + j) - sc * est.y(k0 + i);
             double ax = ca * ex - sa * ey;
             double ay = sa * ex + ca * ey;
-            double delta = est.yaw(k0 + i) + theta - yawr[i];
+            double delta = dyaw[i] + theta;
             double cd = Math.cos(delta);
             double sd = Math.sin(delta);
-            double vx = cd * ax + sd * ay;
-            double vy = -sd * ax + cd * ay;
-            double bx = xr[j] - xr[i];
-            double by = yr[j] - yr[i];
-            double dx = vx - bx;
-            double dy = vy - by;
-            buf[pairs++] = Math.sqrt(dx * dx + dy * dy);
-            sumS += est.t(k0 + j) - est.t(k0 + i);
-            while (pathI < i) {
-                double hx = xr[pathI] - xr[pathI + 1];
-                double hy = yr[pathI] - yr[pathI + 1];
-                dI += Math.sqrt(hx * hx + hy * hy);
-                pathI++;
-            }
-            if (pathJ < pathI) {
-                pathJ = pathI;
-                dJ = dI;
-            }
-            while (pathJ < j) {
-                double hx = xr[pathJ] - xr[pathJ + 1];
-                double hy = yr[pathJ] - yr[pathJ + 1];
-                dJ += Math.sqrt(hx * hx + hy * hy);
-                pathJ++;
-            }
-            sumM += dJ - dI;
+            double dx = cd * ax + sd * ay - (xr[j] - xr[i]);
+            double dy = -sd * ax + cd * ay - (yr[j] - yr[i]);
+            return Math.sqrt(dx * dx + dy * dy);
         }
-        ErrorStatistics rpeTrans = ErrorStatistics.ofInPlace(buf, pairs);
-        int p = 0;
-        for (walk.start(); walk.next();) {
-            int i = walk.i();
-            int j = walk.j();
-            double di = est.yaw(k0 + i) - yawr[i];
-            double dj = est.yaw(k0 + j) - yawr[j];
-            buf[p++] = Math.abs(Angles.wrap(dj - di));
+
+        /** @return |wrap(delta_j - delta_i)| (rad) */
+        double rpeRot(int i, int j) {
+            return Math.abs(Angles.wrap(dyaw[j] - dyaw[i]));
         }
-        ErrorStatistics rpeRot = ErrorStatistics.ofInPlace(buf, pairs);
-        return new ReportParts(m, ne - m, maxGap, aMax, tf, ateTrans, ateRot, rpeTrans, rpeRot, pairs,
-                pairs == 0 ? Double.NaN : sumS / pairs, pairs == 0 ? Double.NaN : sumM / pairs);
+
+        /** @return the length of the interpolated reference path from pose k to k + 1 (m) */
+        double hop(int k) {
+            double hx = xr[k] - xr[k + 1];
+            double hy = yr[k] - yr[k + 1];
+            return Math.sqrt(hx * hx + hy * hy);
+        }
+
+        /** RPE along a sequential pair walk (pairs that chain, e.g. consecutive). */
+        RpeParts rpeWalk(double[] buf, PairWalk walk) {
+            int pairs = 0;
+            double sumS = 0;
+            double sumM = 0;
+            double dI = 0; // reference path length from pose 0 to i (m)
+            double dJ = 0; // ... to j
+            int pathI = 0;
+            int pathJ = 0;
+            for (walk.start(); walk.next();) {
+                int i = walk.i();
+                int j = walk.j();
+                buf[pairs++] = rpeTrans(i, j);
+                sumS += est.t(k0 + j) - est.t(k0 + i);
+                while (pathI < i) {
+                    dI += hop(pathI++);
+                }
+                if (pathJ < pathI) {
+                    pathJ = pathI;
+                    dJ = dI;
+                }
+                while (pathJ < j) {
+                    dJ += hop(pathJ++);
+                }
+                sumM += dJ - dI;
+            }
+            ErrorStatistics trans = ErrorStatistics.ofInPlace(buf, pairs);
+            int p = 0;
+            for (walk.start(); walk.next();) {
+                buf[p++] = rpeRot(walk.i(), walk.j());
+            }
+            return new RpeParts(trans, ErrorStatistics.ofInPlace(buf, pairs), pairs, sumS, sumM);
+        }
+
+        /**
+         * RPE from every start pose i = 0, 1, ...: pair p starts at pose p, so chunks of start
+         * poses are independent. The pairs end at the first start pose without a partner.
+         */
+        RpeParts rpeEveryStart(double[] buf, double delta, RpeUnit unit, Parallelism par) {
+            boolean frames = unit == RpeUnit.FRAMES;
+            int chunks = Parallelism.chunks(m);
+            int[] firstWithout = new int[chunks];
+            double[] sumS = new double[chunks];
+            double[] sumM = new double[chunks];
+            par.forEachChunk(m, (c, from, to) -> {
+                double s = 0;
+                double len = 0;
+                double dI = 0; // reference path length from pose `from` to i (m)
+                double dJ = 0; // ... to j
+                int pathI = from;
+                int pathJ = from;
+                int j = frames ? from : firstPartner(from, delta);
+                int i = from;
+                for (; i < to; i++) {
+                    j = frames ? partnerInFrames(i, delta) : nextPartner(i, j, delta);
+                    if (j >= m || j == i && !frames) {
+                        break;
+                    }
+                    buf[i] = rpeTrans(i, j);
+                    s += est.t(k0 + j) - est.t(k0 + i);
+                    while (pathI < i) {
+                        dI += hop(pathI++);
+                    }
+                    if (pathJ < pathI) {
+                        pathJ = pathI;
+                        dJ = dI;
+                    }
+                    while (pathJ < j) {
+                        dJ += hop(pathJ++);
+                    }
+                    len += dJ - dI;
+                }
+                firstWithout[c] = i;
+                sumS[c] = s;
+                sumM[c] = len;
+            });
+            int pairs = m;
+            double totalS = 0;
+            double totalM = 0;
+            for (int c = 0; c < chunks; c++) {
+                totalS += sumS[c];
+                totalM += sumM[c];
+                if (firstWithout[c] < Math.min((long) (c + 1) * Parallelism.CHUNK, m)) {
+                    pairs = firstWithout[c];
+                    break;
+                }
+            }
+            ErrorStatistics trans = ErrorStatistics.ofInPlace(buf, pairs);
+            par.forEachChunk(pairs, (c, from, to) -> {
+                int j = frames ? from : firstPartner(from, delta);
+                for (int i = from; i < to; i++) {
+                    j = frames ? partnerInFrames(i, delta) : nextPartner(i, j, delta);
+                    buf[i] = rpeRot(i, j);
+                }
+            });
+            return new RpeParts(trans, ErrorStatistics.ofInPlace(buf, pairs), pairs, totalS, totalM);
+        }
+
+        /** @return i + delta (frames), or m when that is past the last pose */
+        private int partnerInFrames(int i, double delta) {
+            long j = (long) i + (int) delta;
+            return j >= m ? m : (int) j;
+        }
+
+        /** @return the first pose j &gt;= i with t_j + off &gt;= (t_i + off) + delta (s), or m (binary search) */
+        private int firstPartner(int i, double delta) {
+            double target = (est.t(k0 + i) + off) + delta;
+            int lo = i;
+            int hi = m;
+            while (lo < hi) {
+                int mid = (lo + hi) >>> 1;
+                if (est.t(k0 + mid) + off < target) {
+                    lo = mid + 1;
+                } else {
+                    hi = mid;
+                }
+            }
+            return lo;
+        }
+
+        /** As {@link #firstPartner}, walking on from {@code j}, the partner of an earlier start pose. */
+        private int nextPartner(int i, int j, double delta) {
+            double target = (est.t(k0 + i) + off) + delta;
+            j = Math.max(i, j);
+            while (j < m && est.t(k0 + j) + off < target) {
+                j++;
+            }
+            return j;
+        }
     }
 
     private static AlignmentTransform fit(EvaluationOptions o, PlanarTrajectory est, int k0, int m, double[] xr,
-            double[] yr, double[] yawr, String estName) {
+            double[] yr, double[] dyaw, String estName) {
         AlignmentModel model = o.alignment();
         if (model == AlignmentModel.NONE) {
             return AlignmentTransform.identity(0);
         }
         if (model == AlignmentModel.ORIGIN) {
-            double theta = yawr[0] - est.yaw(k0);
+            double theta = -dyaw[0]; // reference yaw - estimate yaw at the first pose
             double c = Math.cos(theta);
             double s = Math.sin(theta);
             double tx = xr[0] - (c * est.x(k0) - s * est.y(k0));

@@ -10,6 +10,7 @@ import org.trajeval.core.io.LoadedTrajectory;
 import org.trajeval.core.metric.PairSelection;
 import org.trajeval.core.metric.RpeUnit;
 import org.trajeval.core.report.EvaluationReport;
+import org.trajeval.core.report.ReportJson;
 import org.trajeval.core.traj.PlanarTrajectory;
 
 /**
@@ -47,6 +48,45 @@ class PlanarFastPathTest {
             }
         }
         assertEquals(6 * 4 * 2 * 2, checked);
+    }
+
+    @Test
+    void fastPathAgreesWithTheGeneralPathAcrossManyChunks() {
+        // 150 001 poses = three chunks of 65 536 start poses: interpolation, RPE partners and
+        // path lengths restart at each chunk boundary
+        PlanarTrajectory truth = TestTrajectories.lessonPath(150_001, 0.01);
+        LoadedTrajectory r = TestTrajectories.loaded("gt", truth);
+        LoadedTrajectory e = TestTrajectories.loaded("est", warped(truth, new Random(7)));
+        for (RpeUnit unit : new RpeUnit[] {RpeUnit.SECONDS, RpeUnit.FRAMES}) {
+            EvaluationOptions o = EvaluationOptions.preset(Convention.LESSON).withRpe(unit == RpeUnit.SECONDS ? 1 : 50,
+                    unit).withPairSelection(PairSelection.ALL_PAIRS).withTOffsetS(0.004);
+            assertTrue(PlanarEvaluator.applies(r, e, o));
+            same(Evaluator.run(r, e, o).report(), Evaluator.evaluate(r, e, o), "150 001 poses " + unit);
+        }
+    }
+
+    @Test
+    void threadCountDoesNotChangeASingleBit() throws Exception {
+        PlanarTrajectory truth = TestTrajectories.lessonPath(200_003, 0.01);
+        LoadedTrajectory r = TestTrajectories.loaded("gt", truth);
+        LoadedTrajectory e = TestTrajectories.loaded("est", warped(truth, new Random(11)));
+        java.util.concurrent.ExecutorService pool = java.util.concurrent.Executors.newFixedThreadPool(3);
+        try {
+            for (RpeUnit unit : new RpeUnit[] {RpeUnit.SECONDS, RpeUnit.FRAMES}) {
+                for (PairSelection sel : PairSelection.values()) {
+                    EvaluationOptions o = EvaluationOptions.preset(Convention.LESSON)
+                            .withRpe(unit == RpeUnit.SECONDS ? 0.7 : 20, unit).withPairSelection(sel);
+                    String one = ReportJson.toJson(Evaluator.evaluate(r, e, o));
+                    for (int threads = 2; threads <= 4; threads++) {
+                        // JSON writes the shortest text that reads back to the same bits
+                        assertEquals(one, ReportJson.toJson(Evaluator.evaluate(r, e, o, new Parallelism(pool, threads))),
+                                unit + " " + sel + " on " + threads + " threads");
+                    }
+                }
+            }
+        } finally {
+            pool.shutdownNow();
+        }
     }
 
     private static void same(EvaluationReport a, EvaluationReport b, String what) {

@@ -1,0 +1,78 @@
+package org.trajeval.cli;
+
+import java.nio.file.Path;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import org.trajeval.core.io.LoadedTrajectory;
+
+/**
+ * The threads of one {@code trajeval eval}: the two files are read at once when a second thread is
+ * allowed (parsing is the floor of eval's time), and the evaluation spreads its element-wise passes
+ * over all of them.
+ */
+final class EvalThreads implements AutoCloseable {
+    private final int threads;
+    private final ExecutorService pool;
+
+    /** @param threads threads in all, the caller's included */
+    EvalThreads(int threads) {
+        if (threads < 1) {
+            throw new IllegalArgumentException("--threads must be at least 1, found " + threads);
+        }
+        this.threads = threads;
+        this.pool = threads == 1 ? null : Executors.newFixedThreadPool(threads - 1, r -> {
+            Thread t = new Thread(r, "trajeval-worker");
+            t.setDaemon(true);
+            return t;
+        });
+    }
+
+    /** @return how the evaluation may spread its work */
+    org.trajeval.core.eval.Parallelism parallelism() {
+        return pool == null ? org.trajeval.core.eval.Parallelism.SEQUENTIAL
+                : new org.trajeval.core.eval.Parallelism(pool, threads);
+    }
+
+    /** Reads the reference and the estimate, the estimate on a second thread when there is one. */
+    LoadedTrajectory[] both(InputOptions input, Path reference, Path estimate) {
+        if (pool == null) {
+            return new LoadedTrajectory[] {input.read(reference, true), input.read(estimate, false)};
+        }
+        Future<LoadedTrajectory> est = pool.submit(() -> input.read(estimate, false));
+        LoadedTrajectory ref;
+        try {
+            ref = input.read(reference, true);
+        } catch (RuntimeException e) {
+            est.cancel(true);
+            throw e;
+        }
+        return new LoadedTrajectory[] {ref, join(est)};
+    }
+
+    @Override
+    public void close() {
+        if (pool != null) {
+            pool.shutdownNow();
+        }
+    }
+
+    private static LoadedTrajectory join(Future<LoadedTrajectory> f) {
+        try {
+            return f.get();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("interrupted while reading", e);
+        } catch (ExecutionException e) {
+            Throwable c = e.getCause();
+            if (c instanceof RuntimeException re) {
+                throw re;
+            }
+            if (c instanceof Error err) {
+                throw err;
+            }
+            throw new IllegalStateException(c);
+        }
+    }
+}

@@ -1,0 +1,94 @@
+package org.trajeval.core.eval;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Future;
+import java.util.concurrent.atomic.AtomicInteger;
+
+/**
+ * How many threads an evaluation may use, and the executor that lends the extra ones (the
+ * caller's thread always works too). Work is cut into fixed chunks of {@link #CHUNK} indices
+ * whatever the thread count, and per-chunk partial results are combined in chunk order, so a
+ * result does not depend on the number of threads.
+ *
+ * @param executor runs the {@code threads - 1} helper tasks; unused (may be null) when threads is 1
+ * @param threads threads working at once, the caller's included (at least 1)
+ */
+public record Parallelism(ExecutorService executor, int threads) {
+    /** Indices per chunk. */
+    static final int CHUNK = 1 << 16;
+
+    /** One thread: everything on the caller's thread. */
+    public static final Parallelism SEQUENTIAL = new Parallelism(null, 1);
+
+    /** @throws IllegalArgumentException when threads &lt; 1, or &gt; 1 without an executor */
+    public Parallelism {
+        if (threads < 1) {
+            throw new IllegalArgumentException("threads must be at least 1, got " + threads);
+        }
+        if (threads > 1 && executor == null) {
+            throw new IllegalArgumentException("more than one thread needs an executor");
+        }
+    }
+
+    /** Work on the index range [from, to) of one chunk. */
+    @FunctionalInterface
+    interface ChunkWork {
+        void run(int chunk, int from, int to);
+    }
+
+    /** @return the number of chunks that cover [0, n) */
+    static int chunks(int n) {
+        return (int) (((long) n + CHUNK - 1) / CHUNK);
+    }
+
+    /** Runs {@code work} on every chunk of [0, n), on up to {@link #threads()} threads; returns when all are done. */
+    void forEachChunk(int n, ChunkWork work) {
+        int chunks = chunks(n);
+        if (threads == 1 || chunks < 2) {
+            for (int c = 0; c < chunks; c++) {
+                work.run(c, c * CHUNK, (int) Math.min((long) (c + 1) * CHUNK, n));
+            }
+            return;
+        }
+        AtomicInteger next = new AtomicInteger();
+        Runnable worker = () -> {
+            for (int c = next.getAndIncrement(); c < chunks; c = next.getAndIncrement()) {
+                work.run(c, c * CHUNK, (int) Math.min((long) (c + 1) * CHUNK, n));
+            }
+        };
+        int helpers = Math.min(threads, chunks) - 1;
+        List<Future<?>> futures = new ArrayList<>(helpers);
+        for (int h = 0; h < helpers; h++) {
+            futures.add(executor.submit(worker));
+        }
+        RuntimeException failure = null;
+        try {
+            worker.run();
+        } catch (RuntimeException e) {
+            failure = e;
+            next.set(chunks);
+        }
+        for (Future<?> f : futures) {
+            try {
+                f.get();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new IllegalStateException("interrupted while evaluating", e);
+            } catch (ExecutionException e) {
+                if (failure == null) {
+                    Throwable cause = e.getCause();
+                    if (cause instanceof Error err) {
+                        throw err;
+                    }
+                    failure = cause instanceof RuntimeException re ? re : new IllegalStateException(cause);
+                }
+            }
+        }
+        if (failure != null) {
+            throw failure;
+        }
+    }
+}
