@@ -39,7 +39,7 @@ final class RadixMedian {
     private static final int REFINE_BITS = 16;
     private static final int SMALL_COPY = 4096;
     private static final long INFINITY_BITS = Double.doubleToRawLongBits(Double.POSITIVE_INFINITY);
-    /** A prefix no non-negative value's bits match under mask -1. */
+    /** A prefix no non-negative value's bits match (their sign bit is 0), under any mask. */
     private static final long NONE = -1L;
 
     private final int n;
@@ -53,7 +53,7 @@ final class RadixMedian {
     private int candidates;
     /** Even n only: the set holding rank k-1 when it is not among the candidates; its maximum is k-1. */
     private long predecessorPrefix = NONE;
-    private long predecessorMask = NONE;
+    private long predecessorMask = -1L;
     private boolean predecessorOutside;
     private double below = Double.NEGATIVE_INFINITY;
     private double median = Double.NaN;
@@ -163,7 +163,7 @@ final class RadixMedian {
             mask = -1L << shift;
             prefix = low & mask;
         }
-        if (shift == 0 && predecessorMask == NONE) {
+        if (shift == 0 && predecessorPrefix == NONE) {
             finishWithEqualCandidates(below);
         }
     }
@@ -190,12 +190,11 @@ final class RadixMedian {
             }
         }
         below = lowerMax;
-        predecessorMask = NONE; // resolved (if it was pending)
-        predecessorPrefix = NONE;
+        predecessorPrefix = NONE; // resolved (if it was pending)
         shift = newShift;
         mask = -1L << newShift;
         descend(count);
-        if (shift == 0 && predecessorMask == NONE) {
+        if (shift == 0 && predecessorPrefix == NONE) {
             finishWithEqualCandidates(below);
         }
         return sq;
