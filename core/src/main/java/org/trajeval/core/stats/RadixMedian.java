@@ -7,8 +7,10 @@ package org.trajeval.core.stats;
  * <p>The caller builds a histogram of the top {@value #TOP_BITS} bits (sign, 11 exponent bits and
  * 6 mantissa bits: 64 buckets per binade) in a pass it makes anyway ({@link ErrorStatistics} does it
  * while summing) and hands it to {@link #start}. That picks the bucket holding rank k = n/2 (and
- * k-1 for even n). Each {@link #nextPass} then reads the values once in index order and, in the
- * same loop, returns sum (a_i - mean)^2 so the caller's deviation pass costs nothing extra:
+ * k-1 for even n) and fixes further the bits that the bucket's bounds clipped to [min, max]
+ * share (all values equal: no further pass at all). Each {@link #nextPass} then reads the values
+ * once in index order and, in the same loop, returns sum (a_i - mean)^2 so the caller's deviation
+ * pass costs nothing extra:
  * <ul>
  *   <li>usually the median bucket is small (for errors shaped like |N(0, s)| about 0.6 % of n):
  *       its values are copied to a small array and the middle value(s) selected there, so the
@@ -16,10 +18,12 @@ package org.trajeval.core.stats;
  *   <li>if the bucket holds more than max({@value #SMALL_COPY}, n/8) values (values clustered in
  *       one 1/64 of a binade, many exact duplicates, all values equal) a copy would cost up to
  *       8 n bytes, so instead the pass histograms the next 16 bits of the bucket's values; at most
- *       three such passes fix all 64 bits. The copy is therefore at most max(32 KiB, n) bytes.</li>
+ *       three such passes fix the remaining 46 bits. The copy is therefore at most
+ *       max(32 KiB, n) bytes.</li>
  * </ul>
  * For even n, when rank k-1 lies in a lower bucket than rank k it is the largest value of the
- * highest non-empty bucket below, tracked in the next pass.
+ * highest non-empty bucket below, tracked in the next pass (one extra pass when the last refining
+ * pass left all candidates equal). Worst case: the caller's pass and four more.
  *
  * <p>Memory: the 2^18-entry int histogram (1 MiB), one 64 KiB histogram per refining pass, the
  * copy above. Not thread-safe (one instance per median); no static mutable state.
