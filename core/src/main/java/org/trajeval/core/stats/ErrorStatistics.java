@@ -27,15 +27,56 @@ public record ErrorStatistics(double rmse, double mean, double median, double st
     }
 
     /**
-     * As {@link #of(double[], int)} but without a copy: {@code values[0..count)} is reordered
-     * (the median is found by selection in linear expected time). The sums are taken in index
-     * order before any reordering, so the result equals {@link #of(double[], int)} bit for bit.
+     * As {@link #of(double[], int)} but without a copy: {@code values[0..count)} may be reordered
+     * (small or not non-negative input: the median is found by quickselect in place; large
+     * non-negative input is only read). The sums are taken in index order before any reordering,
+     * so the result equals {@link #of(double[], int)} bit for bit.
+     *
+     * <p>Large non-negative input (count &gt;= {@link RadixMedian#MIN_COUNT}, the usual errors)
+     * is read twice: the first pass sums and histograms the values' top bits, the second sums the
+     * squared deviations and copies the few values sharing the median's top bits, from which the
+     * median is selected (see {@link RadixMedian} for the clustered cases needing more passes).
      */
     public static ErrorStatistics ofInPlace(double[] values, int count) {
         if (count == 0) {
             double nan = Double.NaN;
             return new ErrorStatistics(nan, nan, nan, nan, nan, nan, nan, 0);
         }
+        if (count < RadixMedian.MIN_COUNT) {
+            return ofSmall(values, count);
+        }
+        double sum = 0.0;
+        double sse = 0.0;
+        double min = Double.POSITIVE_INFINITY;
+        double max = Double.NEGATIVE_INFINITY;
+        int[] top = new int[RadixMedian.TOP_BUCKETS];
+        for (int i = 0; i < count; i++) {
+            double v = values[i];
+            sum += v;
+            sse += v * v;
+            min = Math.min(min, v);
+            max = Math.max(max, v);
+            top[(int) (Double.doubleToRawLongBits(v) >>> RadixMedian.TOP_SHIFT)]++;
+        }
+        double mean = sum / count;
+        RadixMedian radix = RadixMedian.start(top, values, count, min, max);
+        double sq;
+        double median;
+        if (radix == null) {
+            sq = squaredDeviations(values, count, mean);
+            median = Selection.medianBySwapping(values, count);
+        } else {
+            sq = radix.done() ? squaredDeviations(values, count, mean) : radix.nextPass(values, mean);
+            while (!radix.done()) {
+                radix.nextPass(values, mean);
+            }
+            median = radix.median();
+        }
+        return new ErrorStatistics(Math.sqrt(sse / count), mean, median, Math.sqrt(sq / count), min, max, sse, count);
+    }
+
+    /** Two passes in index order for the sums, then the median by quickselect (reorders). */
+    private static ErrorStatistics ofSmall(double[] values, int count) {
         double sum = 0.0;
         double sse = 0.0;
         double min = Double.POSITIVE_INFINITY;
@@ -48,13 +89,19 @@ public record ErrorStatistics(double rmse, double mean, double median, double st
             max = Math.max(max, v);
         }
         double mean = sum / count;
+        double sq = squaredDeviations(values, count, mean);
+        double median = Selection.medianBySwapping(values, count);
+        return new ErrorStatistics(Math.sqrt(sse / count), mean, median, Math.sqrt(sq / count), min, max, sse, count);
+    }
+
+    /** @return sum over i in index order of (values_i - mean)^2 */
+    private static double squaredDeviations(double[] values, int count, double mean) {
         double sq = 0.0;
         for (int i = 0; i < count; i++) {
             double d = values[i] - mean;
             sq += d * d;
         }
-        double median = Selection.median(values, count);
-        return new ErrorStatistics(Math.sqrt(sse / count), mean, median, Math.sqrt(sq / count), min, max, sse, count);
+        return sq;
     }
 
     /** Computes the statistics of all of {@code values}. */
