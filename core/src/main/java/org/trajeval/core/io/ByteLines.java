@@ -52,10 +52,65 @@ final class ByteLines implements Closeable {
     static ByteLines open(Path path, String source, long maxBytes) {
         try {
             long size = Files.isRegularFile(path) ? Files.size(path) : 0;
-            return new ByteLines(source, Files.newInputStream(path), maxBytes, size);
+            ByteLines lines = new ByteLines(source, Files.newInputStream(path), maxBytes, size);
+            if (size > SAMPLES * SAMPLE_BYTES) {
+                lines.sampledBytesPerLine = sampleLineLength(path, size);
+            }
+            return lines;
         } catch (IOException | SecurityException e) {
             throw FileProblems.unreadable(source, e);
         }
+    }
+
+    /** Number of places a big file's line length is sampled at, evenly spread from start to end. */
+    static final int SAMPLES = 16;
+    /** Bytes read at each sampled place. */
+    static final int SAMPLE_BYTES = 1 << 14;
+    private double sampledBytesPerLine = Double.NaN;
+
+    /**
+     * @return mean line length (bytes, line end included) over {@link #SAMPLES} stretches of
+     *     {@link #SAMPLE_BYTES} spread evenly over the file, NaN if it cannot be told; numbers
+     *     often grow along a file, so its first lines alone would misjudge the pose count
+     */
+    private static double sampleLineLength(Path path, long size) {
+        java.nio.ByteBuffer buf = java.nio.ByteBuffer.allocate(SAMPLE_BYTES);
+        long spanned = 0;
+        long lines = 0;
+        try (java.nio.channels.FileChannel ch = java.nio.channels.FileChannel.open(path)) {
+            for (int k = 0; k < SAMPLES; k++) {
+                buf.clear();
+                long at = (size - SAMPLE_BYTES) * k / (SAMPLES - 1);
+                while (buf.hasRemaining() && ch.read(buf, at + buf.position()) > 0) {
+                    // a regular file fills the buffer in one or two reads
+                }
+                byte[] b = buf.array();
+                int first = -1;
+                int last = -1;
+                int newlines = 0;
+                for (int i = 0; i < buf.position(); i++) {
+                    if (b[i] == '\n') {
+                        if (first < 0) {
+                            first = i;
+                        }
+                        last = i;
+                        newlines++;
+                    }
+                }
+                if (newlines >= 2) {
+                    spanned += last - first;
+                    lines += newlines - 1;
+                }
+            }
+        } catch (IOException e) {
+            return Double.NaN; // only a size hint: the real read reports any problem
+        }
+        return lines > 0 ? (double) spanned / lines : Double.NaN;
+    }
+
+    /** @return mean line length sampled over the whole file (bytes, line end included), NaN when not sampled */
+    double sampledBytesPerLine() {
+        return sampledBytesPerLine;
     }
 
     static MessageDigest sha256() {

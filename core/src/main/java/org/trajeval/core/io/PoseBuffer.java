@@ -96,8 +96,10 @@ final class PoseBuffer {
         }
         long wanted = (long) n * 2;
         if (progress != null && progress.expectedBytes() > 0 && progress.consumedBytes() > 0) {
-            double posesPerByte = (double) n / progress.consumedBytes();
-            long estimate = (long) (posesPerByte * progress.expectedBytes() * 1.02) + 64;
+            // bytes per pose: sampled over the whole file when it is big, else from the first lines
+            double sampled = progress.sampledBytesPerLine();
+            double bytesPerPose = sampled > 0 ? sampled : (double) progress.consumedBytes() / n;
+            long estimate = (long) (progress.expectedBytes() / bytesPerPose * 1.02) + 64;
             wanted = Math.max(estimate, n + (n >> 3) + 64);
         }
         int capacity = (int) Math.min(wanted, maxPoses);
@@ -180,13 +182,19 @@ final class PoseBuffer {
     }
 
     /**
-     * As {@link #finish} but without trimming: the columns may be longer than {@link #size()}
-     * (by the few percent the size estimate overshot), which spares a copy of every column at the
-     * moment memory peaks. Only the first {@link #size()} values are poses.
+     * As {@link #finish} but trimming only when it is worth a copy: the columns may be longer than
+     * {@link #size()} by at most 4 % (only the first {@link #size()} values are poses). The size
+     * is estimated from line lengths sampled over the whole file; when that still overshoots by
+     * more, the columns are copied one at a time.
      */
     double[][] finishUntrimmed(String emptyWhat) {
         if (n == 0 || lines != null) {
             return finish(emptyWhat);
+        }
+        if (columns[0].length - n > n / 25) {
+            for (int c = 0; c < columns.length; c++) {
+                columns[c] = Arrays.copyOf(columns[c], n);
+            }
         }
         return columns.clone();
     }
