@@ -46,20 +46,24 @@ public record Parallelism(ExecutorService executor, int threads) {
 
     /** Runs {@code work} on every chunk of [0, n), on up to {@link #threads()} threads; returns when all are done. */
     void forEachChunk(int n, ChunkWork work) {
-        int chunks = chunks(n);
-        if (threads == 1 || chunks < 2) {
-            for (int c = 0; c < chunks; c++) {
-                work.run(c, c * CHUNK, (int) Math.min((long) (c + 1) * CHUNK, n));
+        forEach(chunks(n), c -> work.run(c, c * CHUNK, (int) Math.min((long) (c + 1) * CHUNK, n)));
+    }
+
+    /** Runs {@code task} for every index in [0, tasks), on up to {@link #threads()} threads; returns when all are done. */
+    void forEach(int tasks, java.util.function.IntConsumer task) {
+        if (threads == 1 || tasks < 2) {
+            for (int c = 0; c < tasks; c++) {
+                task.accept(c);
             }
             return;
         }
         AtomicInteger next = new AtomicInteger();
         Runnable worker = () -> {
-            for (int c = next.getAndIncrement(); c < chunks; c = next.getAndIncrement()) {
-                work.run(c, c * CHUNK, (int) Math.min((long) (c + 1) * CHUNK, n));
+            for (int c = next.getAndIncrement(); c < tasks; c = next.getAndIncrement()) {
+                task.accept(c);
             }
         };
-        int helpers = Math.min(threads, chunks) - 1;
+        int helpers = Math.min(threads, tasks) - 1;
         List<Future<?>> futures = new ArrayList<>(helpers);
         for (int h = 0; h < helpers; h++) {
             futures.add(executor.submit(worker));
@@ -69,7 +73,7 @@ public record Parallelism(ExecutorService executor, int threads) {
             worker.run();
         } catch (RuntimeException e) {
             failure = e;
-            next.set(chunks);
+            next.set(tasks);
         }
         for (Future<?> f : futures) {
             try {

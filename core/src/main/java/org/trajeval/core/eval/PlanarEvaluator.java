@@ -11,6 +11,7 @@ import org.trajeval.core.io.LoadedTrajectory;
 import org.trajeval.core.metric.PairSelection;
 import org.trajeval.core.metric.RpeUnit;
 import org.trajeval.core.stats.ErrorStatistics;
+import org.trajeval.core.stats.ValueChunks;
 import org.trajeval.core.traj.PlanarTrajectory;
 
 /**
@@ -78,20 +79,22 @@ final class PlanarEvaluator {
         AlignmentTransform tf = fit(o, est, k0, m, pair.xr, pair.yr, pair.dyaw, estName);
         pair.setAlignment(tf);
 
-        // ---- ATE
-        double[] buf = new double[m];
-        par.forEachChunk(m, (c, from, to) -> pair.ateTrans(buf, from, to));
-        ErrorStatistics ateTrans = ErrorStatistics.ofInPlace(buf, m);
-        par.forEachChunk(m, (c, from, to) -> pair.ateRot(buf, from, to));
-        ErrorStatistics ateRot = ErrorStatistics.ofInPlace(buf, m);
-
-        // ---- RPE pairs on the estimate stamps (the pair rules of PairIndices, inlined)
-        RpeParts rpe = o.pairSelection() == PairSelection.ALL_PAIRS && o.rpeDelta() > 0
-                ? pair.rpeEveryStart(buf, o.rpeDelta(), o.rpeUnit(), par)
-                : pair.rpeWalk(buf, new PairWalk(est, k0, m, off, o.rpeDelta(), o.rpeUnit(), o.pairSelection()));
-        return new ReportParts(m, ne - m, sampling[0], sampling[1], tf, ateTrans, ateRot, rpe.trans, rpe.rot,
-                rpe.pairs, rpe.pairs == 0 ? Double.NaN : rpe.sumS / rpe.pairs,
-                rpe.pairs == 0 ? Double.NaN : rpe.sumM / rpe.pairs);
+        // ---- errors and statistics, in an order that lets each pass overwrite what no later pass
+        // reads: RPE trans (recomputed at each reading of the statistics, so no array of its
+        // own), ATE trans into xr, RPE rot into yr, ATE rot into dyaw. Memory: three arrays.
+        PairRule rule = o.pairSelection() == PairSelection.ALL_PAIRS && o.rpeDelta() > 0
+                ? pair.new EveryStart(o.rpeDelta(), o.rpeUnit(), par)
+                : pair.new Walk(new PairWalk(est, k0, m, off, o.rpeDelta(), o.rpeUnit(), o.pairSelection()));
+        ErrorStatistics rpeTrans = ErrorStatistics.of(rule.translationErrors());
+        par.forEachChunk(m, (c, from, to) -> pair.ateTransInto(pair.xr, from, to));
+        ErrorStatistics ateTrans = ErrorStatistics.ofInPlace(pair.xr, m);
+        rule.rotationErrorsInto(pair.yr);
+        ErrorStatistics rpeRot = ErrorStatistics.ofInPlace(pair.yr, rule.pairs());
+        par.forEachChunk(m, (c, from, to) -> pair.ateRotInto(pair.dyaw, from, to));
+        ErrorStatistics ateRot = ErrorStatistics.ofInPlace(pair.dyaw, m);
+        int pairs = rule.pairs();
+        return new ReportParts(m, ne - m, sampling[0], sampling[1], tf, ateTrans, ateRot, rpeTrans, rpeRot,
+                pairs, pairs == 0 ? Double.NaN : rule.sumS() / pairs, pairs == 0 ? Double.NaN : rule.sumM() / pairs);
     }
 
     /** @return {max gap (s), max acceleration (m/s^2)} of the reference over poses [lo, hi], chunk by chunk */
@@ -112,8 +115,22 @@ final class PlanarEvaluator {
         return new double[] {h, a};
     }
 
-    /** RPE statistics and pair sums. */
-    private record RpeParts(ErrorStatistics trans, ErrorStatistics rot, int pairs, double sumS, double sumM) {
+    /** The RPE pairs of one pair-selection rule, with the sums behind the mean horizon. */
+    private interface PairRule {
+        /** @return the number of pairs */
+        int pairs();
+
+        /** @return sum over pairs of t_j - t_i (s) */
+        double sumS();
+
+        /** @return sum over pairs of the reference path length from i to j (m) */
+        double sumM();
+
+        /** @return the translation errors of the pairs in pair order, computed afresh at each reading (m) */
+        ValueChunks translationErrors();
+
+        /** Writes the rotation error of pair p to out[p] (rad); out may be yr, which no pair reads. */
+        void rotationErrorsInto(double[] out);
     }
 
     /**
@@ -199,8 +216,8 @@ final class PlanarEvaluator {
             ty = tf.translation()[1];
         }
 
-        /** out[k] = |s R(theta) p_est,k + t - p_ref,k| (m) */
-        void ateTrans(double[] out, int from, int to) {
+        /** out[k] = |s R(theta) p_est,k + t - p_ref,k| (m); out may be xr (each k reads only its own xr[k], yr[k]) */
+        void ateTransInto(double[] out, int from, int to) {
             for (int k = from; k < to; k++) {
                 double px = sc * est.x(k0 + k);
                 double py = sc * est.y(k0 + k);
@@ -210,8 +227,8 @@ final class PlanarEvaluator {
             }
         }
 
-        /** out[k] = |wrap(yaw_est,k + theta - yaw_ref,k)| (rad) */
-        void ateRot(double[] out, int from, int to) {
+        /** out[k] = |wrap(yaw_est,k + theta - yaw_ref,k)| (rad); out may be dyaw */
+        void ateRotInto(double[] out, int from, int to) {
             for (int k = from; k < to; k++) {
                 out[k] = Math.abs(Angles.wrap(dyaw[k] + theta));
             }
@@ -244,66 +261,24 @@ final class PlanarEvaluator {
             return Math.sqrt(hx * hx + hy * hy);
         }
 
-        /** RPE along a sequential pair walk (pairs that chain, e.g. consecutive). */
-        RpeParts rpeWalk(double[] buf, PairWalk walk) {
-            int pairs = 0;
-            double sumS = 0;
-            double sumM = 0;
-            double dI = 0; // reference path length from pose 0 to i (m)
-            double dJ = 0; // ... to j
-            int pathI = 0;
-            int pathJ = 0;
-            for (walk.start(); walk.next();) {
-                int i = walk.i();
-                int j = walk.j();
-                buf[pairs++] = rpeTrans(i, j);
-                sumS += est.t(k0 + j) - est.t(k0 + i);
-                while (pathI < i) {
-                    dI += hop(pathI++);
-                }
-                if (pathJ < pathI) {
-                    pathJ = pathI;
-                    dJ = dI;
-                }
-                while (pathJ < j) {
-                    dJ += hop(pathJ++);
-                }
-                sumM += dJ - dI;
-            }
-            ErrorStatistics trans = ErrorStatistics.ofInPlace(buf, pairs);
-            int p = 0;
-            for (walk.start(); walk.next();) {
-                buf[p++] = rpeRot(walk.i(), walk.j());
-            }
-            return new RpeParts(trans, ErrorStatistics.ofInPlace(buf, pairs), pairs, sumS, sumM);
-        }
+        /** The RPE pairs of the walk's rules, walked again at each reading (pairs that chain, e.g. consecutive). */
+        final class Walk implements PairRule {
+            private final PairWalk walk;
+            private int pairs;
+            private double sumS;
+            private double sumM;
 
-        /**
-         * RPE from every start pose i = 0, 1, ...: pair p starts at pose p, so chunks of start
-         * poses are independent. The pairs end at the first start pose without a partner.
-         */
-        RpeParts rpeEveryStart(double[] buf, double delta, RpeUnit unit, Parallelism par) {
-            boolean frames = unit == RpeUnit.FRAMES;
-            int chunks = Parallelism.chunks(m);
-            int[] firstWithout = new int[chunks];
-            double[] sumS = new double[chunks];
-            double[] sumM = new double[chunks];
-            par.forEachChunk(m, (c, from, to) -> {
-                double s = 0;
-                double len = 0;
-                double dI = 0; // reference path length from pose `from` to i (m)
+            Walk(PairWalk walk) {
+                this.walk = walk;
+                double dI = 0; // reference path length from pose 0 to i (m)
                 double dJ = 0; // ... to j
-                int pathI = from;
-                int pathJ = from;
-                int j = frames ? from : firstPartner(from, delta);
-                int i = from;
-                for (; i < to; i++) {
-                    j = frames ? partnerInFrames(i, delta) : nextPartner(i, j, delta);
-                    if (j >= m || j == i && !frames) {
-                        break;
-                    }
-                    buf[i] = rpeTrans(i, j);
-                    s += est.t(k0 + j) - est.t(k0 + i);
+                int pathI = 0;
+                int pathJ = 0;
+                for (walk.start(); walk.next();) {
+                    int i = walk.i();
+                    int j = walk.j();
+                    pairs++;
+                    sumS += est.t(k0 + j) - est.t(k0 + i);
                     while (pathI < i) {
                         dI += hop(pathI++);
                     }
@@ -314,32 +289,191 @@ final class PlanarEvaluator {
                     while (pathJ < j) {
                         dJ += hop(pathJ++);
                     }
-                    len += dJ - dI;
-                }
-                firstWithout[c] = i;
-                sumS[c] = s;
-                sumM[c] = len;
-            });
-            int pairs = m;
-            double totalS = 0;
-            double totalM = 0;
-            for (int c = 0; c < chunks; c++) {
-                totalS += sumS[c];
-                totalM += sumM[c];
-                if (firstWithout[c] < Math.min((long) (c + 1) * Parallelism.CHUNK, m)) {
-                    pairs = firstWithout[c];
-                    break;
+                    sumM += dJ - dI;
                 }
             }
-            ErrorStatistics trans = ErrorStatistics.ofInPlace(buf, pairs);
-            par.forEachChunk(pairs, (c, from, to) -> {
-                int j = frames ? from : firstPartner(from, delta);
-                for (int i = from; i < to; i++) {
-                    j = frames ? partnerInFrames(i, delta) : nextPartner(i, j, delta);
-                    buf[i] = rpeRot(i, j);
+
+            @Override
+            public int pairs() {
+                return pairs;
+            }
+
+            @Override
+            public double sumS() {
+                return sumS;
+            }
+
+            @Override
+            public double sumM() {
+                return sumM;
+            }
+
+            @Override
+            public ValueChunks translationErrors() {
+                return new ValueChunks() {
+                    @Override
+                    public int size() {
+                        return pairs;
+                    }
+
+                    @Override
+                    public void forEach(Sink sink) {
+                        double[] chunk = new double[Math.min(Parallelism.CHUNK, Math.max(pairs, 1))];
+                        int len = 0;
+                        for (walk.start(); walk.next();) {
+                            chunk[len++] = rpeTrans(walk.i(), walk.j());
+                            if (len == chunk.length) {
+                                sink.accept(chunk, len);
+                                len = 0;
+                            }
+                        }
+                        if (len > 0) {
+                            sink.accept(chunk, len);
+                        }
+                    }
+                };
+            }
+
+            @Override
+            public void rotationErrorsInto(double[] out) {
+                int p = 0;
+                for (walk.start(); walk.next();) {
+                    out[p++] = rpeRot(walk.i(), walk.j()); // p <= i: nothing read later is overwritten
                 }
-            });
-            return new RpeParts(trans, ErrorStatistics.ofInPlace(buf, pairs), pairs, totalS, totalM);
+            }
+        }
+
+        /**
+         * RPE from every start pose i = 0, 1, ...: pair p starts at pose p, so chunks of start
+         * poses are independent. The pairs end at the first start pose without a partner.
+         */
+        final class EveryStart implements PairRule {
+            private final double delta;
+            private final boolean frames;
+            private final Parallelism par;
+            private int pairs;
+            private double sumS;
+            private double sumM;
+
+            EveryStart(double delta, RpeUnit unit, Parallelism par) {
+                this.delta = delta;
+                this.frames = unit == RpeUnit.FRAMES;
+                this.par = par;
+                int chunks = Parallelism.chunks(m);
+                int[] firstWithout = new int[chunks];
+                double[] chunkS = new double[chunks];
+                double[] chunkM = new double[chunks];
+                par.forEachChunk(m, (c, from, to) -> {
+                    double s = 0;
+                    double len = 0;
+                    double dI = 0; // reference path length from pose `from` to i (m)
+                    double dJ = 0; // ... to j
+                    int pathI = from;
+                    int pathJ = from;
+                    int j = frames ? from : firstPartner(from, delta);
+                    int i = from;
+                    for (; i < to; i++) {
+                        j = partner(i, j);
+                        if (j >= m || j == i && !frames) {
+                            break;
+                        }
+                        s += est.t(k0 + j) - est.t(k0 + i);
+                        while (pathI < i) {
+                            dI += hop(pathI++);
+                        }
+                        if (pathJ < pathI) {
+                            pathJ = pathI;
+                            dJ = dI;
+                        }
+                        while (pathJ < j) {
+                            dJ += hop(pathJ++);
+                        }
+                        len += dJ - dI;
+                    }
+                    firstWithout[c] = i;
+                    chunkS[c] = s;
+                    chunkM[c] = len;
+                });
+                pairs = m;
+                for (int c = 0; c < chunks; c++) {
+                    sumS += chunkS[c];
+                    sumM += chunkM[c];
+                    if (firstWithout[c] < Math.min((long) (c + 1) * Parallelism.CHUNK, m)) {
+                        pairs = firstWithout[c];
+                        break;
+                    }
+                }
+            }
+
+            /** @return the partner of start pose i, given the partner j of an earlier start in the same chunk */
+            private int partner(int i, int j) {
+                return frames ? partnerInFrames(i, delta) : nextPartner(i, j, delta);
+            }
+
+            @Override
+            public int pairs() {
+                return pairs;
+            }
+
+            @Override
+            public double sumS() {
+                return sumS;
+            }
+
+            @Override
+            public double sumM() {
+                return sumM;
+            }
+
+            @Override
+            public ValueChunks translationErrors() {
+                return new ValueChunks() {
+                    @Override
+                    public int size() {
+                        return pairs;
+                    }
+
+                    @Override
+                    public void forEach(Sink sink) {
+                        // a window of one chunk per thread is computed at once, then handed over in order
+                        int chunks = Parallelism.chunks(pairs);
+                        int window = par.threads();
+                        double[][] scratch = new double[Math.min(window, Math.max(chunks, 1))][];
+                        for (int first = 0; first < chunks; first += window) {
+                            int start = first;
+                            int count = Math.min(window, chunks - first);
+                            par.forEach(count, q -> {
+                                int from = (start + q) * Parallelism.CHUNK;
+                                int to = (int) Math.min((long) from + Parallelism.CHUNK, pairs);
+                                if (scratch[q] == null) {
+                                    scratch[q] = new double[Math.min(Parallelism.CHUNK, pairs)];
+                                }
+                                double[] out = scratch[q];
+                                int j = frames ? from : firstPartner(from, delta);
+                                for (int i = from; i < to; i++) {
+                                    j = partner(i, j);
+                                    out[i - from] = rpeTrans(i, j);
+                                }
+                            });
+                            for (int q = 0; q < count; q++) {
+                                int from = (start + q) * Parallelism.CHUNK;
+                                sink.accept(scratch[q], (int) Math.min((long) Parallelism.CHUNK, pairs - from));
+                            }
+                        }
+                    }
+                };
+            }
+
+            @Override
+            public void rotationErrorsInto(double[] out) {
+                par.forEachChunk(pairs, (c, from, to) -> {
+                    int j = frames ? from : firstPartner(from, delta);
+                    for (int i = from; i < to; i++) {
+                        j = partner(i, j);
+                        out[i] = rpeRot(i, j);
+                    }
+                });
+            }
         }
 
         /** @return i + delta (frames), or m when that is past the last pose */

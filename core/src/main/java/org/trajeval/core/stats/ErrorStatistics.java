@@ -45,34 +45,83 @@ public record ErrorStatistics(double rmse, double mean, double median, double st
         if (count < RadixMedian.MIN_COUNT) {
             return ofSmall(values, count);
         }
-        double sum = 0.0;
-        double sse = 0.0;
-        double min = Double.POSITIVE_INFINITY;
-        double max = Double.NEGATIVE_INFINITY;
+        ErrorStatistics large = ofLarge(ValueChunks.of(values, count));
+        if (large != null) {
+            return large;
+        }
+        return ofSmall(values, count);
+    }
+
+    /**
+     * The statistics of values read chunk by chunk, e.g. errors computed afresh at each reading
+     * instead of stored: the same numbers, bit for bit, as {@link #of(double[], int)} on the
+     * values in index order. Large non-negative input is read twice (rarely more, see
+     * {@link RadixMedian}); anything else is copied into an array once.
+     */
+    public static ErrorStatistics of(ValueChunks values) {
+        int count = values.size();
+        if (count == 0) {
+            return of(new double[0], 0);
+        }
+        ErrorStatistics large = count < RadixMedian.MIN_COUNT ? null : ofLarge(values);
+        if (large != null) {
+            return large;
+        }
+        double[] copy = new double[count];
+        int[] filled = {0};
+        values.forEach((a, len) -> {
+            System.arraycopy(a, 0, copy, filled[0], len);
+            filled[0] += len;
+        });
+        return ofSmall(copy, count);
+    }
+
+    /**
+     * The two-pass path for {@code count >= RadixMedian.MIN_COUNT} values.
+     *
+     * @return the statistics, or null when the values are not all non-negative (the caller then
+     *     uses {@link #ofSmall}, which gives the same sums)
+     */
+    private static ErrorStatistics ofLarge(ValueChunks values) {
+        int count = values.size();
+        if (count < RadixMedian.MIN_COUNT) {
+            return null;
+        }
+        // sum, sse, min, max in index order, and the histogram of the values' top bits
+        double[] sums = {0.0, 0.0, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY};
         int[] top = new int[RadixMedian.TOP_BUCKETS];
-        for (int i = 0; i < count; i++) {
-            double v = values[i];
-            sum += v;
-            sse += v * v;
-            min = Math.min(min, v);
-            max = Math.max(max, v);
-            top[(int) (Double.doubleToRawLongBits(v) >>> RadixMedian.TOP_SHIFT)]++;
-        }
-        double mean = sum / count;
-        RadixMedian radix = RadixMedian.start(top, values, count, min, max);
-        double sq;
-        double median;
-        if (radix == null) {
-            sq = squaredDeviations(values, count, mean);
-            median = Selection.medianBySwapping(values, count);
-        } else {
-            sq = radix.done() ? squaredDeviations(values, count, mean) : radix.nextPass(values, mean);
-            while (!radix.done()) {
-                radix.nextPass(values, mean);
+        values.forEach((a, len) -> {
+            double sum = sums[0];
+            double sse = sums[1];
+            double min = sums[2];
+            double max = sums[3];
+            for (int i = 0; i < len; i++) {
+                double v = a[i];
+                sum += v;
+                sse += v * v;
+                min = Math.min(min, v);
+                max = Math.max(max, v);
+                top[(int) (Double.doubleToRawLongBits(v) >>> RadixMedian.TOP_SHIFT)]++;
             }
-            median = radix.median();
+            sums[0] = sum;
+            sums[1] = sse;
+            sums[2] = min;
+            sums[3] = max;
+        });
+        double sse = sums[1];
+        double min = sums[2];
+        double max = sums[3];
+        double mean = sums[0] / count;
+        RadixMedian radix = RadixMedian.start(top, values, count, min, max);
+        if (radix == null) {
+            return null;
         }
-        return new ErrorStatistics(Math.sqrt(sse / count), mean, median, Math.sqrt(sq / count), min, max, sse, count);
+        double sq = radix.done() ? squaredDeviations(values, mean) : radix.nextPass(values, mean);
+        while (!radix.done()) {
+            radix.nextPass(values, mean);
+        }
+        return new ErrorStatistics(Math.sqrt(sse / count), mean, radix.median(), Math.sqrt(sq / count), min, max, sse,
+                count);
     }
 
     /** Two passes in index order for the sums, then the median by quickselect (reorders). */
@@ -102,6 +151,20 @@ public record ErrorStatistics(double rmse, double mean, double median, double st
             sq += d * d;
         }
         return sq;
+    }
+
+    /** @return sum over i in index order of (values_i - mean)^2 */
+    private static double squaredDeviations(ValueChunks values, double mean) {
+        double[] sq = {0.0};
+        values.forEach((a, len) -> {
+            double s = sq[0];
+            for (int i = 0; i < len; i++) {
+                double d = a[i] - mean;
+                s += d * d;
+            }
+            sq[0] = s;
+        });
+        return sq[0];
     }
 
     /** Computes the statistics of all of {@code values}. */

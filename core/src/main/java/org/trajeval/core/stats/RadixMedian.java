@@ -72,14 +72,14 @@ final class RadixMedian {
     /**
      * @param top the histogram of {@code (int) (bits >>> TOP_SHIFT)} over the raw bits of
      *     {@code a[0..n)}, length {@link #TOP_BUCKETS}
-     * @param a the values (read only when the histogram shows +infinity or NaN, to tell them apart)
+     * @param values the values (read only when the histogram shows +infinity or NaN, to tell them apart)
      * @param n the number of values, at least 2
      * @param min the smallest of the values (any bound at or below it is correct, just slower)
      * @param max the largest of the values (any bound at or above it is correct, just slower)
      * @return the narrowing started on the bucket of the median, or null when some value is
      *     negative (sign bit set, including -0.0) or NaN: then this method does not apply
      */
-    static RadixMedian start(int[] top, double[] a, int n, double min, double max) {
+    static RadixMedian start(int[] top, ValueChunks values, int n, double min, double max) {
         int infinityBucket = (int) (INFINITY_BITS >>> TOP_SHIFT);
         for (int b = infinityBucket + 1; b < top.length; b++) {
             if (top[b] != 0) {
@@ -87,10 +87,14 @@ final class RadixMedian {
             }
         }
         if (top[infinityBucket] != 0) {
-            for (int i = 0; i < n; i++) {
-                if (Double.isNaN(a[i])) {
-                    return null;
+            boolean[] nan = new boolean[1];
+            values.forEach((a, len) -> {
+                for (int i = 0; i < len; i++) {
+                    nan[0] |= Double.isNaN(a[i]);
                 }
+            });
+            if (nan[0]) {
+                return null;
             }
         }
         RadixMedian m = new RadixMedian(n);
@@ -116,12 +120,12 @@ final class RadixMedian {
     }
 
     /**
-     * Reads {@code a[0..n)} once in index order, narrowing the candidates (or copying them and
+     * Reads the values once in index order, narrowing the candidates (or copying them and
      * finishing), and in the same loop sums the squared deviations from {@code mean}.
      *
      * @return sum over i in index order of (a_i - mean)^2
      */
-    double nextPass(double[] a, double mean) {
+    double nextPass(ValueChunks a, double mean) {
         if (done) {
             throw new IllegalStateException("median already known");
         }
@@ -173,7 +177,7 @@ final class RadixMedian {
         }
     }
 
-    private double refinePass(double[] a, double mean) {
+    private double refinePass(ValueChunks values, double mean) {
         int newShift = Math.max(0, shift - REFINE_BITS);
         int digitMask = (1 << (shift - newShift)) - 1;
         int[] count = new int[digitMask + 1];
@@ -181,20 +185,25 @@ final class RadixMedian {
         long pp = prefix;
         long qm = predecessorMask;
         long qp = predecessorPrefix;
-        double lowerMax = below;
-        double sq = 0.0;
-        for (int i = 0; i < n; i++) {
-            double v = a[i];
-            double d = v - mean;
-            sq += d * d;
-            long bits = Double.doubleToRawLongBits(v);
-            if ((bits & pm) == pp) {
-                count[(int) (bits >>> newShift) & digitMask]++;
-            } else if ((bits & qm) == qp) {
-                lowerMax = Math.max(lowerMax, v);
+        double[] state = {0.0, below}; // sum of squared deviations, largest value of the predecessor set
+        values.forEach((a, len) -> {
+            double sq = state[0];
+            double lowerMax = state[1];
+            for (int i = 0; i < len; i++) {
+                double v = a[i];
+                double d = v - mean;
+                sq += d * d;
+                long bits = Double.doubleToRawLongBits(v);
+                if ((bits & pm) == pp) {
+                    count[(int) (bits >>> newShift) & digitMask]++;
+                } else if ((bits & qm) == qp) {
+                    lowerMax = Math.max(lowerMax, v);
+                }
             }
-        }
-        below = lowerMax;
+            state[0] = sq;
+            state[1] = lowerMax;
+        });
+        below = state[1];
         predecessorPrefix = NONE; // resolved (if it was pending)
         shift = newShift;
         mask = -1L << newShift;
@@ -202,29 +211,39 @@ final class RadixMedian {
         if (shift == 0 && predecessorPrefix == NONE) {
             finishWithEqualCandidates(below);
         }
-        return sq;
+        return state[0];
     }
 
-    private double copyPass(double[] a, double mean) {
+    private double copyPass(ValueChunks values, double mean) {
         double[] copy = new double[candidates];
-        int m = 0;
         long pm = mask;
         long pp = prefix;
         long qm = predecessorMask;
         long qp = predecessorPrefix;
-        double lowerMax = below;
-        double sq = 0.0;
-        for (int i = 0; i < n; i++) {
-            double v = a[i];
-            double d = v - mean;
-            sq += d * d;
-            long bits = Double.doubleToRawLongBits(v);
-            if ((bits & pm) == pp) {
-                copy[m++] = v;
-            } else if ((bits & qm) == qp) {
-                lowerMax = Math.max(lowerMax, v);
+        double[] state = {0.0, below}; // sum of squared deviations, largest value of the predecessor set
+        int[] copied = {0};
+        values.forEach((a, len) -> {
+            double sq = state[0];
+            double lowerMax = state[1];
+            int k = copied[0];
+            for (int i = 0; i < len; i++) {
+                double v = a[i];
+                double d = v - mean;
+                sq += d * d;
+                long bits = Double.doubleToRawLongBits(v);
+                if ((bits & pm) == pp) {
+                    copy[k++] = v;
+                } else if ((bits & qm) == qp) {
+                    lowerMax = Math.max(lowerMax, v);
+                }
             }
-        }
+            state[0] = sq;
+            state[1] = lowerMax;
+            copied[0] = k;
+        });
+        int m = copied[0];
+        double lowerMax = state[1];
+        double sq = state[0];
         double upper = Selection.select(copy, 0, m - 1, rank);
         if (!even) {
             median = upper;
@@ -243,21 +262,26 @@ final class RadixMedian {
     }
 
     /** All 64 bits are fixed: every candidate equals one value; a pending predecessor is left. */
-    private double lastPassAllCandidatesEqual(double[] a, double mean) {
+    private double lastPassAllCandidatesEqual(ValueChunks values, double mean) {
         long qm = predecessorMask;
         long qp = predecessorPrefix;
-        double lowerMax = below;
-        double sq = 0.0;
-        for (int i = 0; i < n; i++) {
-            double v = a[i];
-            double d = v - mean;
-            sq += d * d;
-            if ((Double.doubleToRawLongBits(v) & qm) == qp) {
-                lowerMax = Math.max(lowerMax, v);
+        double[] state = {0.0, below}; // sum of squared deviations, largest value of the predecessor set
+        values.forEach((a, len) -> {
+            double sq = state[0];
+            double lowerMax = state[1];
+            for (int i = 0; i < len; i++) {
+                double v = a[i];
+                double d = v - mean;
+                sq += d * d;
+                if ((Double.doubleToRawLongBits(v) & qm) == qp) {
+                    lowerMax = Math.max(lowerMax, v);
+                }
             }
-        }
-        finishWithEqualCandidates(lowerMax);
-        return sq;
+            state[0] = sq;
+            state[1] = lowerMax;
+        });
+        finishWithEqualCandidates(state[1]);
+        return state[0];
     }
 
     private void finishWithEqualCandidates(double lowerMax) {

@@ -22,12 +22,13 @@ final class Selection {
             top[(int) (Double.doubleToRawLongBits(a[i]) >>> RadixMedian.TOP_SHIFT)]++;
         }
         // 0 and +infinity bound every value the radix path accepts
-        RadixMedian radix = RadixMedian.start(top, a, n, 0.0, Double.POSITIVE_INFINITY);
+        ValueChunks values = ValueChunks.of(a, n);
+        RadixMedian radix = RadixMedian.start(top, values, n, 0.0, Double.POSITIVE_INFINITY);
         if (radix == null) {
             return medianBySwapping(a, n);
         }
         while (!radix.done()) {
-            radix.nextPass(a, 0.0);
+            radix.nextPass(values, 0.0);
         }
         return radix.median();
     }
