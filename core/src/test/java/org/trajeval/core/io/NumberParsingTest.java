@@ -73,6 +73,41 @@ class NumberParsingTest {
     }
 
     @Test
+    void scannerInsideABigBufferGivesTheBitsOfDoubleParseDouble() {
+        // the eight-bytes-at-a-time path needs 40 readable bytes: numbers in the middle of a long
+        // line, followed by a delimiter, or by more digits past the field's end (which must not count)
+        SplittableRandom rnd = new SplittableRandom(20261122);
+        DecimalScanner scanner = new DecimalScanner();
+        for (int i = 0; i < 200_000; i++) {
+            String s = randomNumber(rnd);
+            boolean digitsAfter = rnd.nextBoolean();
+            String after = digitsAfter ? "9876543210987654321098765432109876543210" : ",1.5,2.5,3.5,4.5,5.5,6.5,7.5,8.5,9.5,10.5";
+            byte[] b = ("12," + s + after).getBytes(StandardCharsets.US_ASCII);
+            int to = 3 + s.length();
+            int end = scanner.scan(b, 3, to);
+            assertEquals(to, end, s);
+            assertEquals(Double.doubleToRawLongBits(Double.parseDouble(s)), Double.doubleToRawLongBits(scanner.value()), s);
+        }
+    }
+
+    @Test
+    void scannerInsideABigBufferStopsAtTheFirstByteThatIsNotPartOfTheNumber() {
+        DecimalScanner scanner = new DecimalScanner();
+        String pad = ",0000000000000000000000000000000000000000";
+        String[][] cases = {{"12.5x", "12.5"}, {"-0.25,", "-0.25"}, {"7.", "7."}, {"1e5", "1e5"}, {"1e", "1"},
+            {"3.25e-2 ", "3.25e-2"}, {"-", ""}, {".", ""}, {"+.5;", "+.5"}, {"12345678901234567.5,", "12345678901234567.5"},
+            {"0.1234567890123456789,", "0.1234567890123456789"}};
+        for (String[] c : cases) {
+            byte[] b = (c[0] + pad).getBytes(StandardCharsets.US_ASCII);
+            int end = scanner.scan(b, 0, c[0].length());
+            assertEquals(c[1].length(), end, c[0]);
+            if (end > 0) {
+                assertEquals(Double.parseDouble(c[1]), scanner.value(), c[0]);
+            }
+        }
+    }
+
+    @Test
     void syntaxIsNarrowerThanJavaAndPython() {
         for (String bad : new String[] {"", "-", "+", ".", "e5", ".e5", "1e", "1e+", "0x1p3", "1.0d", "1f", "NaN",
             "Infinity", "inf", "1_000", "1.2.3", "1,5", "--1", " 1"}) {
