@@ -32,7 +32,7 @@ class MemoryBudgetTest {
     void pairLargerThanTheHeapIsRefusedNamingXmx() throws IOException {
         Path a = csv("a.csv", 10_000);
         Path b = csv("b.csv", 10_000);
-        // 20 000 poses x 160 B = 3.2 MB needed; a 1 MB heap cannot hold them
+        // 20 000 poses x 96 B = 1.9 MB needed; a 1 MB heap cannot hold them
         InputException e = assertThrows(InputException.class, () -> MemoryBudget.check(a, b, 1_000_000));
         assertEquals(InputProblem.TOO_LARGE, e.problem());
         assertTrue(e.getMessage().contains("TRAJEVAL_OPTS=-Xmx"), e.getMessage());
