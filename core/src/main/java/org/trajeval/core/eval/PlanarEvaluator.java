@@ -116,21 +116,31 @@ final class PlanarEvaluator {
     }
 
     /** The RPE pairs of one pair-selection rule, with the sums behind the mean horizon. */
-    private interface PairRule {
-        /** @return the number of pairs */
-        int pairs();
+    private abstract static class PairRule {
+        /** Number of pairs. */
+        int pairs;
+        /** Sum over pairs of t_j - t_i (s). */
+        double sumS;
+        /** Sum over pairs of the reference path length from i to j (m). */
+        double sumM;
 
-        /** @return sum over pairs of t_j - t_i (s) */
-        double sumS();
+        final int pairs() {
+            return pairs;
+        }
 
-        /** @return sum over pairs of the reference path length from i to j (m) */
-        double sumM();
+        final double sumS() {
+            return sumS;
+        }
+
+        final double sumM() {
+            return sumM;
+        }
 
         /** @return the translation errors of the pairs in pair order, computed afresh at each reading (m) */
-        ValueChunks translationErrors();
+        abstract ValueChunks translationErrors();
 
         /** Writes the rotation error of pair p to out[p] (rad); out may be yr, which no pair reads. */
-        void rotationErrorsInto(double[] out);
+        abstract void rotationErrorsInto(double[] out);
     }
 
     /**
@@ -261,55 +271,55 @@ final class PlanarEvaluator {
             return Math.sqrt(hx * hx + hy * hy);
         }
 
+        /**
+         * Reference path lengths between the poses of pairs met in order (i and j never decrease):
+         * two running sums of {@link #hop}s from a start pose, to i and to j.
+         */
+        final class PathSpan {
+            private int pathI;
+            private int pathJ;
+            private double toI; // path length from the start pose to i (m)
+            private double toJ; // ... to j
+
+            PathSpan(int start) {
+                pathI = start;
+                pathJ = start;
+            }
+
+            /** @return the reference path length from pose i to pose j (m) */
+            double between(int i, int j) {
+                while (pathI < i) {
+                    toI += hop(pathI++);
+                }
+                if (pathJ < pathI) {
+                    pathJ = pathI;
+                    toJ = toI;
+                }
+                while (pathJ < j) {
+                    toJ += hop(pathJ++);
+                }
+                return toJ - toI;
+            }
+        }
+
         /** The RPE pairs of the walk's rules, walked again at each reading (pairs that chain, e.g. consecutive). */
-        final class Walk implements PairRule {
+        final class Walk extends PairRule {
             private final PairWalk walk;
-            private int pairs;
-            private double sumS;
-            private double sumM;
 
             Walk(PairWalk walk) {
                 this.walk = walk;
-                double dI = 0; // reference path length from pose 0 to i (m)
-                double dJ = 0; // ... to j
-                int pathI = 0;
-                int pathJ = 0;
+                PathSpan path = new PathSpan(0);
                 for (walk.start(); walk.next();) {
                     int i = walk.i();
                     int j = walk.j();
                     pairs++;
                     sumS += est.t(k0 + j) - est.t(k0 + i);
-                    while (pathI < i) {
-                        dI += hop(pathI++);
-                    }
-                    if (pathJ < pathI) {
-                        pathJ = pathI;
-                        dJ = dI;
-                    }
-                    while (pathJ < j) {
-                        dJ += hop(pathJ++);
-                    }
-                    sumM += dJ - dI;
+                    sumM += path.between(i, j);
                 }
             }
 
             @Override
-            public int pairs() {
-                return pairs;
-            }
-
-            @Override
-            public double sumS() {
-                return sumS;
-            }
-
-            @Override
-            public double sumM() {
-                return sumM;
-            }
-
-            @Override
-            public ValueChunks translationErrors() {
+            ValueChunks translationErrors() {
                 return new ValueChunks() {
                     @Override
                     public int size() {
@@ -335,7 +345,7 @@ final class PlanarEvaluator {
             }
 
             @Override
-            public void rotationErrorsInto(double[] out) {
+            void rotationErrorsInto(double[] out) {
                 int p = 0;
                 for (walk.start(); walk.next();) {
                     out[p++] = rpeRot(walk.i(), walk.j()); // p <= i: nothing read later is overwritten
@@ -347,13 +357,10 @@ final class PlanarEvaluator {
          * RPE from every start pose i = 0, 1, ...: pair p starts at pose p, so chunks of start
          * poses are independent. The pairs end at the first start pose without a partner.
          */
-        final class EveryStart implements PairRule {
+        final class EveryStart extends PairRule {
             private final double delta;
             private final boolean frames;
             private final Parallelism par;
-            private int pairs;
-            private double sumS;
-            private double sumM;
 
             EveryStart(double delta, RpeUnit unit, Parallelism par) {
                 this.delta = delta;
@@ -366,10 +373,7 @@ final class PlanarEvaluator {
                 par.forEachChunk(m, (c, from, to) -> {
                     double s = 0;
                     double len = 0;
-                    double dI = 0; // reference path length from pose `from` to i (m)
-                    double dJ = 0; // ... to j
-                    int pathI = from;
-                    int pathJ = from;
+                    PathSpan path = new PathSpan(from);
                     int j = frames ? from : firstPartner(from, delta);
                     int i = from;
                     for (; i < to; i++) {
@@ -378,17 +382,7 @@ final class PlanarEvaluator {
                             break;
                         }
                         s += est.t(k0 + j) - est.t(k0 + i);
-                        while (pathI < i) {
-                            dI += hop(pathI++);
-                        }
-                        if (pathJ < pathI) {
-                            pathJ = pathI;
-                            dJ = dI;
-                        }
-                        while (pathJ < j) {
-                            dJ += hop(pathJ++);
-                        }
-                        len += dJ - dI;
+                        len += path.between(i, j);
                     }
                     firstWithout[c] = i;
                     chunkS[c] = s;
@@ -411,22 +405,7 @@ final class PlanarEvaluator {
             }
 
             @Override
-            public int pairs() {
-                return pairs;
-            }
-
-            @Override
-            public double sumS() {
-                return sumS;
-            }
-
-            @Override
-            public double sumM() {
-                return sumM;
-            }
-
-            @Override
-            public ValueChunks translationErrors() {
+            ValueChunks translationErrors() {
                 return new ValueChunks() {
                     @Override
                     public int size() {
@@ -465,7 +444,7 @@ final class PlanarEvaluator {
             }
 
             @Override
-            public void rotationErrorsInto(double[] out) {
+            void rotationErrorsInto(double[] out) {
                 par.forEachChunk(pairs, (c, from, to) -> {
                     int j = frames ? from : firstPartner(from, delta);
                     for (int i = from; i < to; i++) {

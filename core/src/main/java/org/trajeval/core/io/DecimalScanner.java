@@ -64,9 +64,47 @@ final class DecimalScanner {
             negative = b[i] == '-';
             i++;
         }
-        long m = 0;
-        int digits = 0;
+        significand = 0;
         int intStart = i;
+        i = shortDigits(b, i, to);
+        int intDigits = i - intStart;
+        int fracDigits = 0;
+        if (i < to && b[i] == '.') {
+            int j = shortDigits(b, i + 1, to);
+            fracDigits = j - i - 1;
+            if (intDigits + fracDigits > 0) {
+                i = j;
+            }
+        }
+        long m = significand;
+        int digits = intDigits + fracDigits;
+        if (digits == 0 || digits > 18 || (i < to && (b[i] >= '0' && b[i] <= '9' || b[i] == 'e' || b[i] == 'E'))) {
+            return LONG_NUMBER;
+        }
+        if (m == 0) {
+            value = negative ? -0.0 : 0.0;
+        } else if (m <= EXACT_SIGNIFICAND && fracDigits <= 22) {
+            double v = (double) m / POWERS_OF_TEN[fracDigits];
+            value = negative ? -v : v;
+        } else {
+            value = JavaDoubleParser.parseDouble(b, from, i - from);
+        }
+        return i;
+    }
+
+    /** The significand accumulated by {@link #shortDigits} and {@link #anyDigits}. */
+    private long significand;
+    /** False once {@link #anyDigits} dropped a digit past 18 significant ones. */
+    private boolean exact;
+
+    /**
+     * Appends the run of at most 16 digits at {@code b[i..to)} to {@link #significand}, eight at
+     * a time (a longer run is left for the caller to see); needs 16 readable bytes from i.
+     *
+     * @return the index just past the digits taken
+     */
+    private int shortDigits(byte[] b, int i, int to) {
+        long m = significand;
         for (int run = 0; run < 2; run++) {
             long t = (long) LONGS.get(b, i) - ZEROS;
             int n = digitRun(t, to - i);
@@ -79,39 +117,40 @@ final class DecimalScanner {
                 break;
             }
         }
-        int intDigits = i - intStart;
-        int fracDigits = 0;
-        if (i < to && b[i] == '.') {
-            int j = i + 1;
-            for (int run = 0; run < 2; run++) {
-                long t = (long) LONGS.get(b, j) - ZEROS;
-                int n = digitRun(t, to - j);
-                if (n == 0) {
-                    break;
-                }
-                m = m * LONG_POWERS_OF_TEN[n] + sumDigits(t << ((8 - n) << 3));
-                j += n;
-                if (n < 8) {
-                    break;
-                }
+        significand = m;
+        return i;
+    }
+
+    /**
+     * Appends the run of digits at {@code b[i..to)}, however long, to {@link #significand}: eight at
+     * a time while eight are there, then one by one; digits that would overflow it are dropped and
+     * clear {@link #exact}.
+     *
+     * @return the index just past the digits
+     */
+    private int anyDigits(byte[] b, int i, int to) {
+        long m = significand;
+        while (i + 8 <= to && m <= EIGHT_DIGITS_LIMIT) {
+            long eight = (long) LONGS.get(b, i);
+            if (!isEightDigits(eight)) {
+                break;
             }
-            fracDigits = j - i - 1;
-            if (intDigits + fracDigits > 0) {
-                i = j;
+            m = m * 100_000_000L + eightDigits(eight);
+            i += 8;
+        }
+        while (i < to) {
+            int d = b[i] - '0';
+            if (d < 0 || d > 9) {
+                break;
             }
+            if (m <= ACCUMULATE_LIMIT) {
+                m = m * 10 + d;
+            } else {
+                exact = false;
+            }
+            i++;
         }
-        digits = intDigits + fracDigits;
-        if (digits == 0 || digits > 18 || (i < to && (b[i] >= '0' && b[i] <= '9' || b[i] == 'e' || b[i] == 'E'))) {
-            return LONG_NUMBER;
-        }
-        if (m == 0) {
-            value = negative ? -0.0 : 0.0;
-        } else if (m <= EXACT_SIGNIFICAND && fracDigits <= 22) {
-            double v = (double) m / POWERS_OF_TEN[fracDigits];
-            value = negative ? -v : v;
-        } else {
-            value = JavaDoubleParser.parseDouble(b, from, i - from);
-        }
+        significand = m;
         return i;
     }
 
@@ -143,58 +182,20 @@ final class DecimalScanner {
             negative = b[i] == '-';
             i++;
         }
-        long m = 0;
-        boolean exact = true;
+        significand = 0;
+        exact = true;
         int intStart = i;
-        while (i + 8 <= to && m <= EIGHT_DIGITS_LIMIT) {
-            long eight = (long) LONGS.get(b, i);
-            if (!isEightDigits(eight)) {
-                break;
-            }
-            m = m * 100_000_000L + eightDigits(eight);
-            i += 8;
-        }
-        while (i < to) {
-            int d = b[i] - '0';
-            if (d < 0 || d > 9) {
-                break;
-            }
-            if (m <= ACCUMULATE_LIMIT) {
-                m = m * 10 + d;
-            } else {
-                exact = false;
-            }
-            i++;
-        }
+        i = anyDigits(b, i, to);
         int intDigits = i - intStart;
         int fracDigits = 0;
         if (i < to && b[i] == '.') {
-            int j = i + 1;
-            while (j + 8 <= to && m <= EIGHT_DIGITS_LIMIT) {
-                long eight = (long) LONGS.get(b, j);
-                if (!isEightDigits(eight)) {
-                    break;
-                }
-                m = m * 100_000_000L + eightDigits(eight);
-                j += 8;
-            }
-            while (j < to) {
-                int d = b[j] - '0';
-                if (d < 0 || d > 9) {
-                    break;
-                }
-                if (m <= ACCUMULATE_LIMIT) {
-                    m = m * 10 + d;
-                } else {
-                    exact = false;
-                }
-                j++;
-            }
+            int j = anyDigits(b, i + 1, to);
             fracDigits = j - i - 1;
             if (intDigits + fracDigits > 0) {
                 i = j;
             }
         }
+        long m = significand;
         if (intDigits + fracDigits == 0) {
             return from;
         }
