@@ -178,7 +178,7 @@ final class PlanarEvaluator {
         /** Interpolates the reference at estimate poses [from, to): x, y linearly, yaw on the unit circle. */
         void interpolate(int from, int to) {
             int last = ref.size() - 1;
-            int seg = firstSegmentEndingAtOrAfter(est.t(k0 + from) + off);
+            int seg = ref.firstAtOrAfter(est.t(k0 + from) + off, 1, last); // last when none: the last segment
             double c0 = Math.cos(ref.yaw(seg - 1));
             double s0 = Math.sin(ref.yaw(seg - 1));
             double c1 = Math.cos(ref.yaw(seg));
@@ -199,21 +199,6 @@ final class PlanarEvaluator {
                 yr[k] = ref.y(seg - 1) + f * (ref.y(seg) - ref.y(seg - 1));
                 dyaw[k] = est.yaw(k0 + k) - Math.atan2(s0 + f * (s1 - s0), c0 + f * (c1 - c0));
             }
-        }
-
-        /** @return the smallest s in [1, last] with ref.t(s) &gt;= t, or last when there is none */
-        private int firstSegmentEndingAtOrAfter(double t) {
-            int lo = 1;
-            int hi = ref.size() - 1;
-            while (lo < hi) {
-                int mid = (lo + hi) >>> 1;
-                if (ref.t(mid) < t) {
-                    lo = mid + 1;
-                } else {
-                    hi = mid;
-                }
-            }
-            return lo;
         }
 
         void setAlignment(AlignmentTransform tf) {
@@ -320,28 +305,20 @@ final class PlanarEvaluator {
 
             @Override
             ValueChunks translationErrors() {
-                return new ValueChunks() {
-                    @Override
-                    public int size() {
-                        return pairs;
-                    }
-
-                    @Override
-                    public void forEach(Sink sink) {
-                        double[] chunk = new double[Math.min(Parallelism.CHUNK, Math.max(pairs, 1))];
-                        int len = 0;
-                        for (walk.start(); walk.next();) {
-                            chunk[len++] = rpeTrans(walk.i(), walk.j());
-                            if (len == chunk.length) {
-                                sink.accept(chunk, len);
-                                len = 0;
-                            }
-                        }
-                        if (len > 0) {
+                return ValueChunks.of(pairs, sink -> {
+                    double[] chunk = new double[Math.min(Parallelism.CHUNK, Math.max(pairs, 1))];
+                    int len = 0;
+                    for (walk.start(); walk.next();) {
+                        chunk[len++] = rpeTrans(walk.i(), walk.j());
+                        if (len == chunk.length) {
                             sink.accept(chunk, len);
+                            len = 0;
                         }
                     }
-                };
+                    if (len > 0) {
+                        sink.accept(chunk, len);
+                    }
+                });
             }
 
             @Override
@@ -406,41 +383,33 @@ final class PlanarEvaluator {
 
             @Override
             ValueChunks translationErrors() {
-                return new ValueChunks() {
-                    @Override
-                    public int size() {
-                        return pairs;
-                    }
-
-                    @Override
-                    public void forEach(Sink sink) {
-                        // a window of one chunk per thread is computed at once, then handed over in order
-                        int chunks = Parallelism.chunks(pairs);
-                        int window = par.threads();
-                        double[][] scratch = new double[Math.min(window, Math.max(chunks, 1))][];
-                        for (int first = 0; first < chunks; first += window) {
-                            int start = first;
-                            int count = Math.min(window, chunks - first);
-                            par.forEach(count, q -> {
-                                int from = (start + q) * Parallelism.CHUNK;
-                                int to = (int) Math.min((long) from + Parallelism.CHUNK, pairs);
-                                if (scratch[q] == null) {
-                                    scratch[q] = new double[Math.min(Parallelism.CHUNK, pairs)];
-                                }
-                                double[] out = scratch[q];
-                                int j = frames ? from : firstPartner(from, delta);
-                                for (int i = from; i < to; i++) {
-                                    j = partner(i, j);
-                                    out[i - from] = rpeTrans(i, j);
-                                }
-                            });
-                            for (int q = 0; q < count; q++) {
-                                int from = (start + q) * Parallelism.CHUNK;
-                                sink.accept(scratch[q], (int) Math.min((long) Parallelism.CHUNK, pairs - from));
+                return ValueChunks.of(pairs, sink -> {
+                    // a window of one chunk per thread is computed at once, then handed over in order
+                    int chunks = Parallelism.chunks(pairs);
+                    int window = par.threads();
+                    double[][] scratch = new double[Math.min(window, Math.max(chunks, 1))][];
+                    for (int first = 0; first < chunks; first += window) {
+                        int start = first;
+                        int count = Math.min(window, chunks - first);
+                        par.forEach(count, q -> {
+                            int from = (start + q) * Parallelism.CHUNK;
+                            int to = (int) Math.min((long) from + Parallelism.CHUNK, pairs);
+                            if (scratch[q] == null) {
+                                scratch[q] = new double[Math.min(Parallelism.CHUNK, pairs)];
                             }
+                            double[] out = scratch[q];
+                            int j = frames ? from : firstPartner(from, delta);
+                            for (int i = from; i < to; i++) {
+                                j = partner(i, j);
+                                out[i - from] = rpeTrans(i, j);
+                            }
+                        });
+                        for (int q = 0; q < count; q++) {
+                            int from = (start + q) * Parallelism.CHUNK;
+                            sink.accept(scratch[q], (int) Math.min((long) Parallelism.CHUNK, pairs - from));
                         }
                     }
-                };
+                });
             }
 
             @Override

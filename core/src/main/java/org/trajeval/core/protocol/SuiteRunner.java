@@ -370,7 +370,7 @@ public final class SuiteRunner {
             double az = scale * (r[2][0] * px + r[2][1] * py + r[2][2] * pz) + t[2];
             double ti = est.t(i) + tOffsetS;
             double err = Double.NaN;
-            int j = upperIndex(ref, ti);
+            int j = ref.firstAtOrAfter(ti, 0, ref.size());
             boolean inside = j < ref.size() && (j > 0 || ref.t(0) == ti);
             if (inside) {
                 int j0 = Math.max(0, j - 1);
@@ -395,21 +395,6 @@ public final class SuiteRunner {
             e[i] = pts.get(i)[3];
         }
         return new SequencePlot.Trace(method, seed, x, y, ts, e);
-    }
-
-    /** @return the first index j with ref.t(j) &gt;= t (size when none) */
-    private static int upperIndex(Trajectory ref, double t) {
-        int lo = 0;
-        int hi = ref.size();
-        while (lo < hi) {
-            int mid = (lo + hi) >>> 1;
-            if (ref.t(mid) < t) {
-                lo = mid + 1;
-            } else {
-                hi = mid;
-            }
-        }
-        return lo;
     }
 
     private static SuiteReport.Protocol protocol(SuiteManifest m, Path manifestFile, SeedSetCheck seeds,

@@ -38,58 +38,58 @@ public record ErrorStatistics(double rmse, double mean, double median, double st
      * median is selected (see {@link RadixMedian} for the clustered cases needing more passes).
      */
     public static ErrorStatistics ofInPlace(double[] values, int count) {
-        if (count == 0) {
-            double nan = Double.NaN;
-            return new ErrorStatistics(nan, nan, nan, nan, nan, nan, nan, 0);
-        }
-        if (count < RadixMedian.MIN_COUNT) {
-            return ofSmall(values, count);
-        }
-        ErrorStatistics large = ofLarge(ValueChunks.of(values, count));
-        if (large != null) {
-            return large;
-        }
-        return ofSmall(values, count);
+        return compute(ValueChunks.of(values, count), values);
     }
 
     /**
      * The statistics of values read chunk by chunk, e.g. errors computed afresh at each reading
      * instead of stored: the same numbers, bit for bit, as {@link #of(double[], int)} on the
      * values in index order. Large non-negative input is read twice (rarely more, see
-     * {@link RadixMedian}); anything else is copied into an array once.
+     * {@link RadixMedian}); anything else is copied into an array once, for its median.
      */
     public static ErrorStatistics of(ValueChunks values) {
-        int count = values.size();
-        if (count == 0) {
-            return of(new double[0], 0);
-        }
-        ErrorStatistics large = count < RadixMedian.MIN_COUNT ? null : ofLarge(values);
-        if (large != null) {
-            return large;
-        }
-        double[] copy = new double[count];
-        int[] filled = {0};
-        values.forEach((a, len) -> {
-            System.arraycopy(a, 0, copy, filled[0], len);
-            filled[0] += len;
-        });
-        return ofSmall(copy, count);
+        return compute(values, null);
     }
 
     /**
-     * The two-pass path for {@code count >= RadixMedian.MIN_COUNT} values.
-     *
-     * @return the statistics, or null when the values are not all non-negative (the caller then
-     *     uses {@link #ofSmall}, which gives the same sums)
+     * Sums in index order (sum, sse, min, max, then the squared deviations), and the median: by
+     * radix selection on the values' bits for large non-negative input (the first histogram taken
+     * in the sums' pass), else by quickselect on {@code array} (reordered) or on a copy when null.
      */
-    private static ErrorStatistics ofLarge(ValueChunks values) {
+    private static ErrorStatistics compute(ValueChunks values, double[] array) {
         int count = values.size();
-        if (count < RadixMedian.MIN_COUNT) {
-            return null;
+        if (count == 0) {
+            double nan = Double.NaN;
+            return new ErrorStatistics(nan, nan, nan, nan, nan, nan, nan, 0);
         }
-        // sum, sse, min, max in index order, and the histogram of the values' top bits
+        int[] top = count < RadixMedian.MIN_COUNT ? null : new int[RadixMedian.TOP_BUCKETS];
+        double[] sums = sums(values, top);
+        double sse = sums[1];
+        double min = sums[2];
+        double max = sums[3];
+        double mean = sums[0] / count;
+        RadixMedian radix = top == null ? null : RadixMedian.start(top, values, count, min, max);
+        double sq;
+        double median;
+        if (radix != null) {
+            sq = radix.done() ? squaredDeviations(values, mean) : radix.nextPass(values, mean);
+            while (!radix.done()) {
+                radix.nextPass(values, mean);
+            }
+            median = radix.median();
+        } else {
+            sq = squaredDeviations(values, mean);
+            median = Selection.medianBySwapping(array != null ? array : copy(values), count);
+        }
+        return new ErrorStatistics(Math.sqrt(sse / count), mean, median, Math.sqrt(sq / count), min, max, sse, count);
+    }
+
+    /**
+     * @param top when not null, counts each value's top {@link RadixMedian#TOP_BITS} bits
+     * @return {sum, sse, min, max} of the values, summed in index order
+     */
+    private static double[] sums(ValueChunks values, int[] top) {
         double[] sums = {0.0, 0.0, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY};
-        int[] top = new int[RadixMedian.TOP_BUCKETS];
         values.forEach((a, len) -> {
             double sum = sums[0];
             double sse = sums[1];
@@ -101,56 +101,16 @@ public record ErrorStatistics(double rmse, double mean, double median, double st
                 sse += v * v;
                 min = Math.min(min, v);
                 max = Math.max(max, v);
-                top[(int) (Double.doubleToRawLongBits(v) >>> RadixMedian.TOP_SHIFT)]++;
+                if (top != null) {
+                    top[(int) (Double.doubleToRawLongBits(v) >>> RadixMedian.TOP_SHIFT)]++;
+                }
             }
             sums[0] = sum;
             sums[1] = sse;
             sums[2] = min;
             sums[3] = max;
         });
-        double sse = sums[1];
-        double min = sums[2];
-        double max = sums[3];
-        double mean = sums[0] / count;
-        RadixMedian radix = RadixMedian.start(top, values, count, min, max);
-        if (radix == null) {
-            return null;
-        }
-        double sq = radix.done() ? squaredDeviations(values, mean) : radix.nextPass(values, mean);
-        while (!radix.done()) {
-            radix.nextPass(values, mean);
-        }
-        return new ErrorStatistics(Math.sqrt(sse / count), mean, radix.median(), Math.sqrt(sq / count), min, max, sse,
-                count);
-    }
-
-    /** Two passes in index order for the sums, then the median by quickselect (reorders). */
-    private static ErrorStatistics ofSmall(double[] values, int count) {
-        double sum = 0.0;
-        double sse = 0.0;
-        double min = Double.POSITIVE_INFINITY;
-        double max = Double.NEGATIVE_INFINITY;
-        for (int i = 0; i < count; i++) {
-            double v = values[i];
-            sum += v;
-            sse += v * v;
-            min = Math.min(min, v);
-            max = Math.max(max, v);
-        }
-        double mean = sum / count;
-        double sq = squaredDeviations(values, count, mean);
-        double median = Selection.medianBySwapping(values, count);
-        return new ErrorStatistics(Math.sqrt(sse / count), mean, median, Math.sqrt(sq / count), min, max, sse, count);
-    }
-
-    /** @return sum over i in index order of (values_i - mean)^2 */
-    private static double squaredDeviations(double[] values, int count, double mean) {
-        double sq = 0.0;
-        for (int i = 0; i < count; i++) {
-            double d = values[i] - mean;
-            sq += d * d;
-        }
-        return sq;
+        return sums;
     }
 
     /** @return sum over i in index order of (values_i - mean)^2 */
@@ -165,6 +125,17 @@ public record ErrorStatistics(double rmse, double mean, double median, double st
             sq[0] = s;
         });
         return sq[0];
+    }
+
+    /** @return the values in one new array */
+    private static double[] copy(ValueChunks values) {
+        double[] copy = new double[values.size()];
+        int[] filled = {0};
+        values.forEach((a, len) -> {
+            System.arraycopy(a, 0, copy, filled[0], len);
+            filled[0] += len;
+        });
+        return copy;
     }
 
     /** Computes the statistics of all of {@code values}. */

@@ -20,15 +20,20 @@ public interface ValueChunks {
 
     /** @return the first {@code n} values of {@code a}, as one chunk */
     static ValueChunks of(double[] a, int n) {
+        return of(n, sink -> sink.accept(a, n));
+    }
+
+    /** @return {@code size} values that {@code producer} hands to a sink, in index order, at each reading */
+    static ValueChunks of(int size, java.util.function.Consumer<Sink> producer) {
         return new ValueChunks() {
             @Override
             public int size() {
-                return n;
+                return size;
             }
 
             @Override
             public void forEach(Sink sink) {
-                sink.accept(a, n);
+                producer.accept(sink);
             }
         };
     }

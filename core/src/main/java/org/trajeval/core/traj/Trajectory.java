@@ -37,4 +37,22 @@ public sealed interface Trajectory permits PlanarTrajectory, SpatialTrajectory {
 
     /** @return the poses with indices in [from, to) */
     Trajectory slice(int from, int to);
+
+    /**
+     * @return the first index k in [from, to) with t(k) &gt;= t (s), or {@code to} when there is
+     *     none; binary search, the timestamps being non-decreasing
+     */
+    default int firstAtOrAfter(double t, int from, int to) {
+        int lo = from;
+        int hi = to;
+        while (lo < hi) {
+            int mid = (lo + hi) >>> 1;
+            if (t(mid) < t) {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        return lo;
+    }
 }
