@@ -49,8 +49,8 @@ import picocli.CommandLine;
 class SettingsAcrossFrontEndsTest {
     private static final ObjectMapper JSON = new ObjectMapper();
     /** The report sections that hold numbers; inputs (paths) differ by front end. */
-    private static final List<String> SECTIONS = List.of("convention", "association", "alignment", "ate", "rpe",
-            "drift");
+    private static final List<String> SECTIONS = List.of("convention", "association", "coverage", "alignment",
+            "ate", "rpe", "drift", "warnings");
 
     @TempDir
     Path dir;
@@ -103,6 +103,8 @@ class SettingsAcrossFrontEndsTest {
                         settings("format", "csv", "time_unit", "ms", "columns", "time,px,py,heading", "delimiter", ";",
                         "sort", "true", "association", "nearest", "max_diff_s", "0.004", "alignment", "se2",
                         "rpe_pairs", "consecutive", "rpe_delta", "2", "rpe_unit", "s"), true),
+                new Case("fr2_desk lesson, duplicates kept, max gap", r.resolve("fr2_desk_groundtruth.txt"),
+                        r.resolve("fr2_desk_ORB.txt"), settings("duplicates", "keep", "max_gap_s", "0.5"), true),
                 new Case("fr1_xyz planar projection", r.resolve("freiburg1_xyz-groundtruth.txt"),
                         r.resolve("freiburg1_xyz-rgbdslam.txt"), settings("planar", "true", "alignment", "se2"), true));
     }

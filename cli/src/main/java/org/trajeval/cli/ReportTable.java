@@ -26,11 +26,34 @@ final class ReportTable {
             sb.append(String.format(Locale.ROOT, ", offset %.4g s", a.tOffsetS()));
         }
         sb.append(String.format(Locale.ROOT, "%n           reference max gap h = %.4g s", a.maxGapS()));
+        if (a.gapLimitS() != null) {
+            sb.append(String.format(Locale.ROOT, " (interpolation bridges gaps up to %.4g s)", a.gapLimitS()));
+        }
         if (a.interpErrorBoundM() != null) {
             sb.append(String.format(Locale.ROOT, ", interpolation error bound A_max h^2/8 = %.3g m (A_max %.3g m/s^2)",
                     a.interpErrorBoundM(), a.aMaxMps2()));
         }
         sb.append(System.lineSeparator());
+        if (a.droppedInGaps() > 0) {
+            sb.append(String.format(Locale.ROOT, "           %d estimate poses dropped inside %d reference gaps longer "
+                    + "than %.4g s:", a.droppedInGaps(), a.gaps().size(), a.gapLimitS()));
+            int shown = 0;
+            for (EvaluationReport.Gap g : a.gaps()) {
+                if (shown++ == 3) {
+                    sb.append(" ...");
+                    break;
+                }
+                sb.append(String.format(Locale.ROOT, " %d in [%.3f, %.3f] s (%.3f s)%s", g.dropped(), g.startS(),
+                        g.endS(), g.lengthS(), shown < Math.min(3, a.gaps().size()) ? ";" : ""));
+            }
+            sb.append(System.lineSeparator());
+        }
+        EvaluationReport.CoverageInfo c = r.coverage();
+        if (c != null) {
+            sb.append(String.format(Locale.ROOT, "coverage   %.1f %% of the reference's %.3f s; longest stretch without "
+                    + "an estimate %.3f s (from %.3f s)%n", 100.0 * c.fraction(), c.referenceSpanS(), c.longestGapS(),
+                    c.longestGapStartS()));
+        }
         EvaluationReport.AlignmentInfo al = r.alignment();
         double[][] rot = al.rotation();
         double yaw = Math.toDegrees(Math.atan2(rot[1][0], rot[0][0]));
@@ -58,6 +81,9 @@ final class ReportTable {
         sb.append(System.lineSeparator());
         if (r.drift() != null && !"kitti".equals(r.convention())) {
             sb.append(drift(r.drift()));
+        }
+        for (EvaluationReport.Warning w : r.warnings()) {
+            sb.append("WARNING ").append(w.code()).append(": ").append(w.message()).append(System.lineSeparator());
         }
         return sb.toString();
     }

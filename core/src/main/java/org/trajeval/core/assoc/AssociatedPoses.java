@@ -12,9 +12,27 @@ import org.trajeval.core.traj.PoseSequence;
  * @param droppedReference reference poses never used (nearest association; 0 for interpolation)
  * @param maxGapS largest reference sampling gap h inside the matched span (s)
  * @param aMaxMps2 largest reference acceleration norm inside the matched span (m/s^2)
+ * @param gapLimitS longest reference gap interpolation bridged (s); +inf for nearest association
+ * @param gaps reference gaps longer than the limit with estimate poses dropped in them (counted in
+ *     {@code droppedEstimate}), in time order
  */
 public record AssociatedPoses(PoseSequence reference, PoseSequence estimate, double[] timestamps,
-        int droppedEstimate, int droppedReference, double maxGapS, double aMaxMps2) {
+        int droppedEstimate, int droppedReference, double maxGapS, double aMaxMps2, double gapLimitS,
+        java.util.List<ReferenceGap> gaps) {
+
+    /** @throws NullPointerException without gaps */
+    public AssociatedPoses {
+        gaps = java.util.List.copyOf(gaps);
+    }
+
+    /** @return estimate poses dropped inside reference gaps longer than the limit */
+    public int droppedInGaps() {
+        int n = 0;
+        for (ReferenceGap g : gaps) {
+            n += g.dropped();
+        }
+        return n;
+    }
 
     /** @return number of associated pairs */
     public int size() {

@@ -19,6 +19,18 @@ public final class ReferenceSampling {
         return h;
     }
 
+    /** @return the largest gap t(k+1) - t(k) <= limit for from <= k < to (s): the largest one bridged */
+    public static double maxGapUpTo(Trajectory ref, int from, int to, double limit) {
+        double h = 0.0;
+        for (int k = from; k < to; k++) {
+            double g = ref.t(k + 1) - ref.t(k);
+            if (g <= limit) {
+                h = Math.max(h, g);
+            }
+        }
+        return h;
+    }
+
     /**
      * Largest acceleration norm of the reference over poses [from, to], estimated by second
      * divided differences: a_k = 2 (v_k - v_{k-1}) / (h_k + h_{k-1}), v_k = (p_{k+1} - p_k) / h_k

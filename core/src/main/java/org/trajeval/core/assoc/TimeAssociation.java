@@ -49,9 +49,30 @@ public final class TimeAssociation {
         int[] keep = new int[n];
         double[] tq = new double[n];
         int count = 0;
+        double limit = o.maxGap().limitS(ref);
+        java.util.List<ReferenceGap> gaps = new java.util.ArrayList<>();
+        int seg = 1;
+        int last = ref.size() - 1;
+        int gapSeg = -1;
+        int inGap = 0;
         for (int i = 0; i < n; i++) {
             double t = est.t(i) + off;
             if (t >= t0 && t <= tn) {
+                // bracketing reference poses seg - 1, seg: first seg with t(seg) >= t (stamps increase)
+                while (seg < last && ref.t(seg) < t) {
+                    seg++;
+                }
+                if (t > ref.t(seg - 1) && t < ref.t(seg) && ref.t(seg) - ref.t(seg - 1) > limit) {
+                    if (seg != gapSeg) {
+                        if (inGap > 0) {
+                            gaps.add(new ReferenceGap(ref.t(gapSeg - 1), ref.t(gapSeg), inGap));
+                        }
+                        gapSeg = seg;
+                        inGap = 0;
+                    }
+                    inGap++;
+                    continue;
+                }
                 keep[count] = i;
                 tq[count++] = t;
             } else if (o.overlap() == OverlapPolicy.STRICT) {
@@ -60,6 +81,9 @@ public final class TimeAssociation {
                                 + "time span [%.6f, %.6f] s; the overlap policy is strict (use --overlap crop to "
                                 + "drop such poses)", i, t, t0, tn), null);
             }
+        }
+        if (inGap > 0) {
+            gaps.add(new ReferenceGap(ref.t(gapSeg - 1), ref.t(gapSeg), inGap));
         }
         if (count == 0) {
             throw noOverlap(ref, est, o, refName, estName);
@@ -74,7 +98,8 @@ public final class TimeAssociation {
         PoseSequence estPoses = est.toSpatial().poses().select(keep, count);
         int[] span = span(ref, stamps[0], stamps[count - 1]);
         return new AssociatedPoses(refPoses, estPoses, stamps, n - count, 0,
-                ReferenceSampling.maxGap(ref, span[0], span[1]), ReferenceSampling.maxAcceleration(ref, span[0], span[1]));
+                ReferenceSampling.maxGapUpTo(ref, span[0], span[1], limit),
+                ReferenceSampling.maxAcceleration(ref, span[0], span[1]), limit, gaps);
     }
 
     // ---------------------------------------------------------------- evo's nearest matching
@@ -157,7 +182,8 @@ public final class TimeAssociation {
         int first = idxRef[0];
         int last = idxRef[count - 1];
         return new AssociatedPoses(refPoses, estPoses, stamps, est.size() - distinctEst, ref.size() - distinctRef,
-                ReferenceSampling.maxGap(ref, first, last), ReferenceSampling.maxAcceleration(ref, first, last));
+                ReferenceSampling.maxGap(ref, first, last), ReferenceSampling.maxAcceleration(ref, first, last),
+                Double.POSITIVE_INFINITY, java.util.List.of());
     }
 
     private static int countDistinct(int[] sortedIndices, int count) {

@@ -2,6 +2,7 @@ package org.trajeval.core.eval;
 
 import org.trajeval.core.align.AlignmentModel;
 import org.trajeval.core.assoc.AssociationMethod;
+import org.trajeval.core.assoc.MaxGap;
 import org.trajeval.core.assoc.OverlapPolicy;
 import org.trajeval.core.metric.DriftOptions;
 import org.trajeval.core.metric.PairSelection;
@@ -24,11 +25,13 @@ import org.trajeval.core.metric.RpeUnit;
  * @param pairSelection consecutive pairs or all pairs
  * @param pairsFrom trajectory the RPE pairs are chosen on
  * @param drift length-normalised drift settings, or {@code null} for no drift
+ * @param maxGap longest reference gap the lesson's interpolation bridges (estimate poses inside
+ *     longer gaps are dropped and counted)
  */
 public record EvaluationOptions(Convention convention, AssociationMethod association, double maxDiffS,
         double tOffsetS, OverlapPolicy overlap, AlignmentModel alignment, int nToAlign,
         PlanarProjection projection, double rpeDelta, RpeUnit rpeUnit, PairSelection pairSelection,
-        PairsFrom pairsFrom, DriftOptions drift) {
+        PairsFrom pairsFrom, DriftOptions drift, MaxGap maxGap) {
 
     /** @throws IllegalArgumentException on a missing or out-of-range setting */
     public EvaluationOptions {
@@ -40,6 +43,7 @@ public record EvaluationOptions(Convention convention, AssociationMethod associa
         requireNonNull(rpeUnit, "rpeUnit");
         requireNonNull(pairSelection, "pairSelection");
         requireNonNull(pairsFrom, "pairsFrom");
+        requireNonNull(maxGap, "maxGap");
         if (!(maxDiffS > 0.0) || !Double.isFinite(maxDiffS)) {
             throw new IllegalArgumentException("max-diff must be a positive number of seconds, got " + maxDiffS);
         }
@@ -71,13 +75,13 @@ public record EvaluationOptions(Convention convention, AssociationMethod associa
         return switch (convention) {
             case LESSON -> new EvaluationOptions(convention, AssociationMethod.INTERPOLATE, 0.01, 0.0,
                     OverlapPolicy.CROP, AlignmentModel.SE2, -1, PlanarProjection.NONE, 1.0, RpeUnit.SECONDS,
-                    PairSelection.ALL_PAIRS, PairsFrom.ESTIMATE, null);
+                    PairSelection.ALL_PAIRS, PairsFrom.ESTIMATE, null, MaxGap.DEFAULT);
             case EVO -> new EvaluationOptions(convention, AssociationMethod.NEAREST, 0.01, 0.0,
                     OverlapPolicy.CROP, AlignmentModel.NONE, -1, PlanarProjection.NONE, 1.0, RpeUnit.FRAMES,
-                    PairSelection.CONSECUTIVE, PairsFrom.ESTIMATE, null);
+                    PairSelection.CONSECUTIVE, PairsFrom.ESTIMATE, null, MaxGap.DEFAULT);
             case KITTI -> new EvaluationOptions(convention, AssociationMethod.NEAREST, 0.01, 0.0,
                     OverlapPolicy.CROP, AlignmentModel.NONE, -1, PlanarProjection.NONE, 1.0, RpeUnit.FRAMES,
-                    PairSelection.CONSECUTIVE, PairsFrom.ESTIMATE, DriftOptions.KITTI);
+                    PairSelection.CONSECUTIVE, PairsFrom.ESTIMATE, DriftOptions.KITTI, MaxGap.DEFAULT);
         };
     }
 
@@ -98,66 +102,72 @@ public record EvaluationOptions(Convention convention, AssociationMethod associa
     /** @return a copy with another association method */
     public EvaluationOptions withAssociation(AssociationMethod v) {
         return new EvaluationOptions(convention, v, maxDiffS, tOffsetS, overlap, alignment, nToAlign, projection,
-                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift);
+                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap);
     }
 
     /** @return a copy with another max difference (s) */
     public EvaluationOptions withMaxDiffS(double v) {
         return new EvaluationOptions(convention, association, v, tOffsetS, overlap, alignment, nToAlign, projection,
-                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift);
+                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap);
     }
 
     /** @return a copy with another time offset (s) */
     public EvaluationOptions withTOffsetS(double v) {
         return new EvaluationOptions(convention, association, maxDiffS, v, overlap, alignment, nToAlign, projection,
-                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift);
+                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap);
     }
 
     /** @return a copy with another overlap policy */
     public EvaluationOptions withOverlap(OverlapPolicy v) {
         return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, v, alignment, nToAlign, projection,
-                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift);
+                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap);
     }
 
     /** @return a copy with another alignment model */
     public EvaluationOptions withAlignment(AlignmentModel v) {
         return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, v, nToAlign, projection,
-                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift);
+                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap);
     }
 
     /** @return a copy fitting the alignment on the first n poses (-1: all) */
     public EvaluationOptions withNToAlign(int v) {
         return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, alignment, v, projection,
-                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift);
+                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap);
     }
 
     /** @return a copy with another planar projection */
     public EvaluationOptions withProjection(PlanarProjection v) {
         return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, alignment, nToAlign, v,
-                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift);
+                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap);
     }
 
     /** @return a copy with another RPE horizon */
     public EvaluationOptions withRpe(double delta, RpeUnit unit) {
         return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, alignment, nToAlign,
-                projection, delta, unit, pairSelection, pairsFrom, drift);
+                projection, delta, unit, pairSelection, pairsFrom, drift, maxGap);
     }
 
     /** @return a copy with another pair selection */
     public EvaluationOptions withPairSelection(PairSelection v) {
         return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, alignment, nToAlign,
-                projection, rpeDelta, rpeUnit, v, pairsFrom, drift);
+                projection, rpeDelta, rpeUnit, v, pairsFrom, drift, maxGap);
     }
 
     /** @return a copy choosing RPE pairs on another trajectory */
     public EvaluationOptions withPairsFrom(PairsFrom v) {
         return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, alignment, nToAlign,
-                projection, rpeDelta, rpeUnit, pairSelection, v, drift);
+                projection, rpeDelta, rpeUnit, pairSelection, v, drift, maxGap);
+    }
+
+    /** @return a copy with another max gap */
+    public EvaluationOptions withMaxGap(MaxGap v) {
+        return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, alignment, nToAlign,
+                projection, rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, v);
     }
 
     /** @return a copy with other drift settings ({@code null}: no drift) */
     public EvaluationOptions withDrift(DriftOptions v) {
         return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, alignment, nToAlign,
-                projection, rpeDelta, rpeUnit, pairSelection, pairsFrom, v);
+                projection, rpeDelta, rpeUnit, pairSelection, pairsFrom, v, maxGap);
     }
 }

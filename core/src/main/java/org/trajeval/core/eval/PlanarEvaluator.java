@@ -62,9 +62,6 @@ final class PlanarEvaluator {
         if (m < 2 || (o.overlap() == OverlapPolicy.STRICT && m != ne)) {
             return null;
         }
-        Pair pair = new Pair(ref, est, k0, m, off);
-        // ---- association: the reference interpolated at the estimate stamps (lesson's rule)
-        par.forEachChunk(m, (c, from, to) -> pair.interpolate(from, to));
         int spanLo = 0;
         while (spanLo + 1 < nr && ref.t(spanLo + 1) <= est.t(k0) + off) {
             spanLo++;
@@ -74,6 +71,12 @@ final class PlanarEvaluator {
             spanHi--;
         }
         double[] sampling = referenceSampling(ref, spanLo, spanHi, par);
+        if (sampling[0] > o.maxGap().limitS(ref)) {
+            return null; // a reference gap longer than the limit: the general path drops and counts
+        }
+        Pair pair = new Pair(ref, est, k0, m, off);
+        // ---- association: the reference interpolated at the estimate stamps (lesson's rule)
+        par.forEachChunk(m, (c, from, to) -> pair.interpolate(from, to));
 
         // ---- alignment (closed form, same sums as the general path)
         AlignmentTransform tf = fit(o, est, k0, m, pair.xr, pair.yr, pair.dyaw, estName);

@@ -53,6 +53,10 @@ public enum Setting {
             "Max timestamp difference for nearest association (s, > 0; default 0.01)."),
     T_OFFSET_S("t_offset_s", "--t-offset", SettingKind.NUMBER, SettingScope.EVALUATION, "S", "s", "all",
             "Offset added to the estimate's timestamps (s; default 0)."),
+    MAX_GAP_S("max_gap_s", "--max-gap", SettingKind.NUMBER_OR_AUTO, SettingScope.EVALUATION, "S|auto", "s", "all",
+            "Longest reference gap the interpolated association bridges (s, > 0; default auto: 10 median "
+            + "reference periods); estimate poses inside longer gaps are dropped, counted and located in the "
+            + "report."),
     OVERLAP("overlap", "--overlap", SettingKind.CHOICE, SettingScope.EVALUATION, "crop|strict", "", "all",
             "Estimate poses outside the reference's time span: crop (drop and count them; default) or strict "
             + "(refuse)."),
@@ -183,6 +187,7 @@ public enum Setting {
         return switch (kind) {
             case CHOICE -> "one of " + values.replace("|", ", ");
             case NUMBER -> (this == T_OFFSET_S ? "a finite number" : "a number > 0") + u;
+            case NUMBER_OR_AUTO -> "auto or a number > 0" + u;
             case INTEGER -> "a whole number >= 1" + u;
             case SWITCH -> "true or false";
             case NUMBERS -> "numbers > 0 separated by commas" + u;
@@ -207,6 +212,7 @@ public enum Setting {
         Object v = switch (kind) {
             case CHOICE -> choice(t);
             case NUMBER -> number(t, this != T_OFFSET_S);
+            case NUMBER_OR_AUTO -> t.equalsIgnoreCase("auto") ? "auto" : number(t, true);
             case INTEGER -> WHOLE.matcher(t).matches() && Long.parseLong(t) >= 1 && Long.parseLong(t) <= Integer.MAX_VALUE
                     ? Integer.valueOf(Integer.parseInt(t)) : null;
             case SWITCH -> t.equalsIgnoreCase("true") ? Boolean.TRUE : t.equalsIgnoreCase("false") ? Boolean.FALSE : null;

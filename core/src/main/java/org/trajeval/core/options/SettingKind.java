@@ -6,6 +6,8 @@ public enum SettingKind {
     CHOICE,
     /** A finite decimal number. */
     NUMBER,
+    /** A finite decimal number, or the word auto (the value is then derived from the data). */
+    NUMBER_OR_AUTO,
     /** A whole number. */
     INTEGER,
     /** true or false; on the command line a flag without an argument. */

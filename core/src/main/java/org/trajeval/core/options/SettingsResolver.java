@@ -4,6 +4,7 @@ import java.util.Locale;
 import org.trajeval.core.InputException;
 import org.trajeval.core.align.AlignmentModel;
 import org.trajeval.core.assoc.AssociationMethod;
+import org.trajeval.core.assoc.MaxGap;
 import org.trajeval.core.assoc.OverlapPolicy;
 import org.trajeval.core.eval.Convention;
 import org.trajeval.core.eval.EvaluationOptions;
@@ -92,6 +93,9 @@ public final class SettingsResolver {
         }
         if (s.has(Setting.T_OFFSET_S)) {
             o = o.withTOffsetS((Double) s.get(Setting.T_OFFSET_S));
+        }
+        if (s.get(Setting.MAX_GAP_S) instanceof Double gap) {
+            o = o.withMaxGap(MaxGap.ofSeconds(gap));
         }
         if (s.has(Setting.OVERLAP)) {
             o = o.withOverlap(OverlapPolicy.valueOf(upper(Setting.OVERLAP, s)));

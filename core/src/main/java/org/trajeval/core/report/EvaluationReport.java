@@ -20,9 +20,12 @@ import com.fasterxml.jackson.annotation.JsonPropertyOrder;
  * @param ate absolute trajectory error
  * @param rpe relative pose error
  * @param drift length-normalised drift, or {@code null} when not asked
+ * @param coverage share of the reference's time span the associated estimate covers
+ * @param warnings what a careful user should know about these numbers (degenerate alignment,
+ *     poses dropped in reference gaps, ...), machine-readable
  */
-@JsonPropertyOrder({"schema", "schema_version", "version", "convention", "inputs", "association", "alignment",
-    "ate", "rpe", "drift"})
+@JsonPropertyOrder({"schema", "schema_version", "version", "convention", "inputs", "association", "coverage",
+    "alignment", "ate", "rpe", "drift", "warnings"})
 @JsonInclude(JsonInclude.Include.NON_NULL)
 public record EvaluationReport(
         @JsonProperty("schema") String schema,
@@ -34,7 +37,14 @@ public record EvaluationReport(
         @JsonProperty("alignment") AlignmentInfo alignment,
         @JsonProperty("ate") Ate ate,
         @JsonProperty("rpe") Rpe rpe,
-        @JsonProperty("drift") Drift drift) {
+        @JsonProperty("drift") Drift drift,
+        @JsonProperty("coverage") CoverageInfo coverage,
+        @JsonProperty("warnings") java.util.List<Warning> warnings) {
+
+    /** @throws NullPointerException never; null warnings (older reports) read as none */
+    public EvaluationReport {
+        warnings = warnings == null ? java.util.List.of() : java.util.List.copyOf(warnings);
+    }
 
     /** Name of the report schema. */
     public static final String SCHEMA = "trajeval.evaluation";
@@ -75,15 +85,63 @@ public record EvaluationReport(
      * @param aMaxMps2 largest acceleration norm of the reference over the matched span, estimated by
      *     second divided differences (m/s^2); null for nearest association
      * @param interpErrorBoundM the lesson's Proposition 2 bound A_max h^2 / 8 (m); null for nearest association
+     * @param gapLimitS longest reference gap interpolation may bridge (s); null for nearest association
+     * @param droppedInGaps estimate poses dropped inside longer reference gaps (part of {@code dropped})
+     * @param gaps those gaps, in time order (at most {@link #MAX_GAPS_LISTED})
      */
     @JsonPropertyOrder({"method", "matched", "dropped", "dropped_reference", "max_diff_s", "t_offset_s", "overlap",
-        "max_gap_s", "a_max_mps2", "interp_error_bound_m"})
+        "max_gap_s", "a_max_mps2", "interp_error_bound_m", "gap_limit_s", "dropped_in_gaps", "gaps"})
     public record AssociationInfo(@JsonProperty("method") String method, @JsonProperty("matched") int matched,
             @JsonProperty("dropped") int dropped, @JsonProperty("dropped_reference") int droppedReference,
             @JsonProperty("max_diff_s") double maxDiffS, @JsonProperty("t_offset_s") double tOffsetS,
             @JsonProperty("overlap") String overlap, @JsonProperty("max_gap_s") double maxGapS,
             @JsonProperty("a_max_mps2") Double aMaxMps2,
-            @JsonProperty("interp_error_bound_m") Double interpErrorBoundM) {
+            @JsonProperty("interp_error_bound_m") Double interpErrorBoundM,
+            @JsonProperty("gap_limit_s") Double gapLimitS, @JsonProperty("dropped_in_gaps") int droppedInGaps,
+            @JsonProperty("gaps") java.util.List<Gap> gaps) {
+        /** Most gaps listed in a report (all are counted). */
+        public static final int MAX_GAPS_LISTED = 100;
+    }
+
+    /**
+     * A reference gap longer than the limit, with the estimate poses dropped in it.
+     *
+     * @param startS reference stamp before the gap (s)
+     * @param endS reference stamp after the gap (s)
+     * @param lengthS endS - startS (s)
+     * @param dropped estimate poses dropped inside it
+     */
+    @JsonPropertyOrder({"start_s", "end_s", "length_s", "dropped"})
+    public record Gap(@JsonProperty("start_s") double startS, @JsonProperty("end_s") double endS,
+            @JsonProperty("length_s") double lengthS, @JsonProperty("dropped") int dropped) {
+    }
+
+    /**
+     * Coverage of the reference's time span by the associated estimate (see
+     * {@code org.trajeval.core.metric.Coverage}).
+     *
+     * @param fraction covered share, in [0, 1]
+     * @param longestGapS longest stretch without an associated estimate pose (s)
+     * @param longestGapStartS where it begins (s, reference clock)
+     * @param uncoveredS total uncovered time (s)
+     * @param referenceSpanS the reference's time span (s)
+     */
+    @JsonPropertyOrder({"fraction", "longest_gap_s", "longest_gap_start_s", "uncovered_s", "reference_span_s"})
+    public record CoverageInfo(@JsonProperty("fraction") double fraction,
+            @JsonProperty("longest_gap_s") double longestGapS,
+            @JsonProperty("longest_gap_start_s") double longestGapStartS,
+            @JsonProperty("uncovered_s") double uncoveredS,
+            @JsonProperty("reference_span_s") double referenceSpanS) {
+    }
+
+    /**
+     * Something a careful user should know about the numbers, with the option that avoids it.
+     *
+     * @param code stable machine-readable name, e.g. {@code poses_dropped_in_reference_gaps}
+     * @param message one line for people
+     */
+    @JsonPropertyOrder({"code", "message"})
+    public record Warning(@JsonProperty("code") String code, @JsonProperty("message") String message) {
     }
 
     /**
