@@ -321,6 +321,10 @@ public final class SuiteRunner {
             return failed(m, ms, s, seed, rel, sha, FailureDefinition.Reason.EVALUATION_REFUSED, e.getMessage(),
                     coverage);
         }
+        if (rep.coverage() != null) {
+            // the report's coverage: the time the associated poses cover, not the span of the file
+            coverage = rep.coverage().fraction();
+        }
         double[] values = new double[m.score().terms().size()];
         Map<String, Double> metrics = new LinkedHashMap<>();
         for (int j = 0; j < values.length; j++) {
@@ -360,7 +364,8 @@ public final class SuiteRunner {
     }
 
     /**
-     * Coverage: the fraction of the reference's time span [r0, r1] covered by the estimate's span
+     * Coverage before evaluation (kept for runs the evaluation refuses): the fraction of the
+     * reference's time span [r0, r1] covered by the estimate's span
      * shifted by the offset, (min(r1, e1) - max(r0, e0)) / (r1 - r0), clipped to [0, 1].
      */
     static double coverage(Trajectory ref, Trajectory est, double tOffsetS) {

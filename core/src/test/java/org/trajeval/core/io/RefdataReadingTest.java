@@ -27,10 +27,7 @@ import org.trajeval.core.traj.SpatialTrajectory;
 class RefdataReadingTest {
 
     static Path refdata(String file) {
-        String dir = System.getProperty("trajeval.refdata");
-        Assumptions.assumeTrue(dir != null && Files.isDirectory(Path.of(dir)),
-                "SKIPPED: ../shared/refdata is absent (system property trajeval.refdata = " + dir + ")");
-        return Path.of(dir, file);
+        return org.trajeval.core.RefData.dir().resolve(file);
     }
 
     @ParameterizedTest(name = "{0}: {2} poses as {1}")

@@ -69,11 +69,7 @@ class EvoParityTest {
     }
 
     static Path refdata() {
-        String p = System.getProperty("trajeval.refdata", "../../shared/refdata");
-        Path dir = Paths.get(p);
-        Assumptions.assumeTrue(Files.isRegularFile(dir.resolve("evo_reference.json")),
-                "SKIPPED: evo reference data not found at " + dir.toAbsolutePath() + " (../shared/refdata)");
-        return dir;
+        return org.trajeval.core.RefData.dir();
     }
 
     static synchronized LoadedTrajectory load(Path dir, String file, TrajectoryFormat format) {
