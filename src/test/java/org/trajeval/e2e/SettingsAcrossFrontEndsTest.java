@@ -49,8 +49,8 @@ import picocli.CommandLine;
 class SettingsAcrossFrontEndsTest {
     private static final ObjectMapper JSON = new ObjectMapper();
     /** The report sections that hold numbers; inputs (paths) differ by front end. */
-    private static final List<String> SECTIONS = List.of("convention", "association", "coverage", "alignment",
-            "ate", "rpe", "drift", "warnings");
+    private static final List<String> SECTIONS = List.of("convention", "time_base", "association", "coverage",
+            "alignment", "ate", "rpe", "drift", "extra", "warnings");
 
     @TempDir
     Path dir;
@@ -89,7 +89,8 @@ class SettingsAcrossFrontEndsTest {
                 new Case("fr2_desk evo nearest-interpolated", r.resolve("fr2_desk_groundtruth.txt"),
                         r.resolve("fr2_desk_ORB.txt"), settings("format", "tum", "duplicates", "keep",
                         "association", "nearest-interpolated", "max_diff_s", "0.02", "alignment", "se3",
-                        "rpe_delta", "10", "rpe_unit", "frames", "pairs_from", "reference"), true),
+                        "rpe_delta", "10", "rpe_unit", "frames", "pairs_from", "reference", "extra_metrics", "true"),
+                        true),
                 new Case("EuRoC V1_02 evo sim3", r.resolve("V102_groundtruth.csv"), r.resolve("V102.txt"),
                         settings("ref_format", "euroc", "est_format", "tum", "convention", "evo", "alignment", "sim3",
                         "t_offset_s", "0.005", "rpe_delta", "0.5", "rpe_unit", "m", "rpe_pairs", "all-pairs",

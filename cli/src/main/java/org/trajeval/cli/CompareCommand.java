@@ -68,7 +68,7 @@ public final class CompareCommand implements Callable<Integer> {
         String nameA = pick(a, methodA, reportB == null ? 0 : -1, "-a", reportA);
         String nameB = pick(b, methodB, reportB == null ? 1 : -1, "-b", reportB == null ? reportA : reportB);
         if (reportB == null && nameA.equals(nameB)) {
-            throw new IllegalArgumentException("-a and -b name the same method: " + nameA);
+            throw UsageProblem.of("-b", "-a and -b name the same method", nameA);
         }
         String labelA = nameA;
         String labelB = nameB;
@@ -86,8 +86,8 @@ public final class CompareCommand implements Callable<Integer> {
             }
         }
         if (seeds.isEmpty() || sequences.isEmpty()) {
-            throw new IllegalArgumentException("the reports have no " + (seeds.isEmpty() ? "seed" : "sequence")
-                    + " in common: nothing to pair");
+            throw UsageProblem.of("REPORT_B", "the reports have no " + (seeds.isEmpty() ? "seed" : "sequence")
+                    + " in common: nothing to pair", null);
         }
         List<RunEntry> runsA = runs(a, nameA, seeds);
         List<RunEntry> runsB = runs(b, nameB, seeds);
@@ -101,6 +101,7 @@ public final class CompareCommand implements Callable<Integer> {
         if (sameScore) {
             keys.add(SuiteAnalysis.SCORE);
         }
+        stats.check();
         SuiteAnalysis.Settings settings = new SuiteAnalysis.Settings(stats.seed, stats.confidence, stats.resamples);
         List<Comparison> comparisons = new ArrayList<>();
         for (int i = 0; i < keys.size(); i++) {
@@ -139,8 +140,8 @@ public final class CompareCommand implements Callable<Integer> {
         List<String> names = r.methods().stream().map(SuiteReport.MethodSummary::name).toList();
         if (name != null) {
             if (!names.contains(name)) {
-                throw new IllegalArgumentException(source + ": no method '" + name + "' (" + option
-                        + "); the report has " + names);
+                throw UsageProblem.of(option, source + ": no method '" + name + "' (" + option
+                        + "); the report has " + names, null);
             }
             return name;
         }
@@ -150,7 +151,8 @@ public final class CompareCommand implements Callable<Integer> {
         if (index >= 0 && names.size() == 2) {
             return names.get(index);
         }
-        throw new IllegalArgumentException(source + ": name the method with " + option + "; the report has " + names);
+        throw UsageProblem.of(option, source + ": name the method with " + option + "; the report has " + names,
+                null);
     }
 
     /** Prints one line per comparison. */

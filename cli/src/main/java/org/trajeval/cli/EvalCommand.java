@@ -64,8 +64,8 @@ public final class EvalCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        MemoryBudget.check(reference, estimate, Runtime.getRuntime().maxMemory());
         SettingValues settings = SettingValues.of(SettingOptions.given(spec.commandLine().getParseResult()), null);
+        MemoryBudget.check(reference, estimate, Runtime.getRuntime().maxMemory());
         ReadOptions limits = ReadOptions.defaults();
         if (maxPoses != null || maxBytes != null) {
             limits = limits.withLimits(maxBytes != null ? maxBytes : limits.maxBytes(),

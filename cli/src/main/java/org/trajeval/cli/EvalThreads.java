@@ -21,7 +21,7 @@ final class EvalThreads implements AutoCloseable {
     /** @param threads threads in all, the caller's included */
     EvalThreads(int threads) {
         if (threads < 1) {
-            throw new IllegalArgumentException("--threads must be at least 1, found " + threads);
+            throw UsageProblem.of("--threads", "--threads must be at least 1", String.valueOf(threads));
         }
         this.threads = threads;
         this.pool = threads == 1 ? null : Executors.newFixedThreadPool(threads - 1, r -> {

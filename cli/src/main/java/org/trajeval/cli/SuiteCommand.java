@@ -52,6 +52,7 @@ public final class SuiteCommand implements Callable<Integer> {
         long start = System.nanoTime();
         SuiteReport r;
         try {
+            stats.check();
             r = SuiteOutput.runAndWrite(manifest, out, new SuiteRunner.Settings(stats.seed, allowLeakage,
                     stats.confidence, stats.resamples), threads == null ? Runtime.getRuntime().availableProcessors() : threads, err);
         } catch (SplitLeakageException e) {

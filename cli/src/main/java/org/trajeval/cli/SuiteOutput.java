@@ -21,7 +21,7 @@ final class SuiteOutput {
     static SuiteReport runAndWrite(Path manifest, Path out, SuiteRunner.Settings settings, int threads,
             PrintWriter err) {
         if (threads < 1) {
-            throw new IllegalArgumentException("--threads must be >= 1, got " + threads);
+            throw UsageProblem.of("--threads", "--threads must be at least 1", String.valueOf(threads));
         }
         ExecutorService pool = Executors.newFixedThreadPool(threads);
         try {

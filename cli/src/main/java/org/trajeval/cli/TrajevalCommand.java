@@ -54,8 +54,9 @@ public final class TrajevalCommand implements Runnable {
         public int handleExecutionException(Exception ex, CommandLine cl, CommandLine.ParseResult parsed) {
             PrintWriter err = cl.getErr();
             boolean verbose = isVerbose(parsed);
-            if (ex instanceof InputException || ex instanceof IllegalArgumentException
-                    || ex instanceof java.io.UncheckedIOException) {
+            // bad input is an InputException (the file, line or option it names) or a file that cannot be
+            // read or written; anything else, IllegalArgumentException included, is a bug of ours
+            if (ex instanceof InputException || ex instanceof java.io.UncheckedIOException) {
                 err.println("trajeval: " + ex.getMessage());
                 if (verbose) {
                     ex.printStackTrace(err);

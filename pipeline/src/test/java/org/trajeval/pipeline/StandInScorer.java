@@ -37,7 +37,7 @@ public final class StandInScorer implements RunScorer {
                 new EvaluationReport.InputInfo(job.estimate().getFileName().toString(), "csv", "stand-in", est.length,
                         ContentHash.ofFile(job.estimate())));
         return new EvaluationReport(EvaluationReport.SCHEMA, EvaluationReport.SCHEMA_VERSION, Version.TOOL, "lesson",
-                inputs, null, null, new EvaluationReport.Ate(stats, stats), null, null, null, null);
+                inputs, null, null, new EvaluationReport.Ate(stats, stats), null, null, null, null, null, null);
     }
 
     private static double[][] read(Path file) {

@@ -27,11 +27,15 @@ import org.trajeval.core.metric.RpeUnit;
  * @param drift length-normalised drift settings, or {@code null} for no drift
  * @param maxGap longest reference gap the lesson's interpolation bridges (estimate poses inside
  *     longer gaps are dropped and counted)
+ * @param timeOffset whether tOffsetS is used as given or estimated from the data
+ * @param extraMetrics whether per-axis, heading and speed errors are computed ({@link
+ *     org.trajeval.core.metric.ExtraMetrics})
  */
 public record EvaluationOptions(Convention convention, AssociationMethod association, double maxDiffS,
         double tOffsetS, OverlapPolicy overlap, AlignmentModel alignment, int nToAlign,
         PlanarProjection projection, double rpeDelta, RpeUnit rpeUnit, PairSelection pairSelection,
-        PairsFrom pairsFrom, DriftOptions drift, MaxGap maxGap) {
+        PairsFrom pairsFrom, DriftOptions drift, MaxGap maxGap, TimeOffset timeOffset,
+        boolean extraMetrics) {
 
     /** @throws IllegalArgumentException on a missing or out-of-range setting */
     public EvaluationOptions {
@@ -44,6 +48,7 @@ public record EvaluationOptions(Convention convention, AssociationMethod associa
         requireNonNull(pairSelection, "pairSelection");
         requireNonNull(pairsFrom, "pairsFrom");
         requireNonNull(maxGap, "maxGap");
+        requireNonNull(timeOffset, "timeOffset");
         if (!(maxDiffS > 0.0) || !Double.isFinite(maxDiffS)) {
             throw new IllegalArgumentException("max-diff must be a positive number of seconds, got " + maxDiffS);
         }
@@ -75,13 +80,13 @@ public record EvaluationOptions(Convention convention, AssociationMethod associa
         return switch (convention) {
             case LESSON -> new EvaluationOptions(convention, AssociationMethod.INTERPOLATE, 0.01, 0.0,
                     OverlapPolicy.CROP, AlignmentModel.SE2, -1, PlanarProjection.NONE, 1.0, RpeUnit.SECONDS,
-                    PairSelection.ALL_PAIRS, PairsFrom.ESTIMATE, null, MaxGap.DEFAULT);
+                    PairSelection.ALL_PAIRS, PairsFrom.ESTIMATE, null, MaxGap.DEFAULT, TimeOffset.GIVEN, false);
             case EVO -> new EvaluationOptions(convention, AssociationMethod.NEAREST, 0.01, 0.0,
                     OverlapPolicy.CROP, AlignmentModel.NONE, -1, PlanarProjection.NONE, 1.0, RpeUnit.FRAMES,
-                    PairSelection.CONSECUTIVE, PairsFrom.ESTIMATE, null, MaxGap.DEFAULT);
+                    PairSelection.CONSECUTIVE, PairsFrom.ESTIMATE, null, MaxGap.DEFAULT, TimeOffset.GIVEN, false);
             case KITTI -> new EvaluationOptions(convention, AssociationMethod.NEAREST, 0.01, 0.0,
                     OverlapPolicy.CROP, AlignmentModel.NONE, -1, PlanarProjection.NONE, 1.0, RpeUnit.FRAMES,
-                    PairSelection.CONSECUTIVE, PairsFrom.ESTIMATE, DriftOptions.KITTI, MaxGap.DEFAULT);
+                    PairSelection.CONSECUTIVE, PairsFrom.ESTIMATE, DriftOptions.KITTI, MaxGap.DEFAULT, TimeOffset.GIVEN, false);
         };
     }
 
@@ -102,72 +107,84 @@ public record EvaluationOptions(Convention convention, AssociationMethod associa
     /** @return a copy with another association method */
     public EvaluationOptions withAssociation(AssociationMethod v) {
         return new EvaluationOptions(convention, v, maxDiffS, tOffsetS, overlap, alignment, nToAlign, projection,
-                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap);
+                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap, timeOffset, extraMetrics);
     }
 
     /** @return a copy with another max difference (s) */
     public EvaluationOptions withMaxDiffS(double v) {
         return new EvaluationOptions(convention, association, v, tOffsetS, overlap, alignment, nToAlign, projection,
-                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap);
+                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap, timeOffset, extraMetrics);
     }
 
     /** @return a copy with another time offset (s) */
     public EvaluationOptions withTOffsetS(double v) {
         return new EvaluationOptions(convention, association, maxDiffS, v, overlap, alignment, nToAlign, projection,
-                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap);
+                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap, timeOffset, extraMetrics);
     }
 
     /** @return a copy with another overlap policy */
     public EvaluationOptions withOverlap(OverlapPolicy v) {
         return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, v, alignment, nToAlign, projection,
-                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap);
+                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap, timeOffset, extraMetrics);
     }
 
     /** @return a copy with another alignment model */
     public EvaluationOptions withAlignment(AlignmentModel v) {
         return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, v, nToAlign, projection,
-                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap);
+                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap, timeOffset, extraMetrics);
     }
 
     /** @return a copy fitting the alignment on the first n poses (-1: all) */
     public EvaluationOptions withNToAlign(int v) {
         return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, alignment, v, projection,
-                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap);
+                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap, timeOffset, extraMetrics);
     }
 
     /** @return a copy with another planar projection */
     public EvaluationOptions withProjection(PlanarProjection v) {
         return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, alignment, nToAlign, v,
-                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap);
+                rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap, timeOffset, extraMetrics);
     }
 
     /** @return a copy with another RPE horizon */
     public EvaluationOptions withRpe(double delta, RpeUnit unit) {
         return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, alignment, nToAlign,
-                projection, delta, unit, pairSelection, pairsFrom, drift, maxGap);
+                projection, delta, unit, pairSelection, pairsFrom, drift, maxGap, timeOffset, extraMetrics);
     }
 
     /** @return a copy with another pair selection */
     public EvaluationOptions withPairSelection(PairSelection v) {
         return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, alignment, nToAlign,
-                projection, rpeDelta, rpeUnit, v, pairsFrom, drift, maxGap);
+                projection, rpeDelta, rpeUnit, v, pairsFrom, drift, maxGap, timeOffset, extraMetrics);
     }
 
     /** @return a copy choosing RPE pairs on another trajectory */
     public EvaluationOptions withPairsFrom(PairsFrom v) {
         return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, alignment, nToAlign,
-                projection, rpeDelta, rpeUnit, pairSelection, v, drift, maxGap);
+                projection, rpeDelta, rpeUnit, pairSelection, v, drift, maxGap, timeOffset, extraMetrics);
+    }
+
+    /** @return a copy computing the extra metrics or not */
+    public EvaluationOptions withExtraMetrics(boolean v) {
+        return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, alignment, nToAlign,
+                projection, rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap, timeOffset, v);
+    }
+
+    /** @return a copy whose offset is given ({@code tOffsetS}) or estimated from the data */
+    public EvaluationOptions withTimeOffset(TimeOffset v) {
+        return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, alignment, nToAlign,
+                projection, rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, maxGap, v, extraMetrics);
     }
 
     /** @return a copy with another max gap */
     public EvaluationOptions withMaxGap(MaxGap v) {
         return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, alignment, nToAlign,
-                projection, rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, v);
+                projection, rpeDelta, rpeUnit, pairSelection, pairsFrom, drift, v, timeOffset, extraMetrics);
     }
 
     /** @return a copy with other drift settings ({@code null}: no drift) */
     public EvaluationOptions withDrift(DriftOptions v) {
         return new EvaluationOptions(convention, association, maxDiffS, tOffsetS, overlap, alignment, nToAlign,
-                projection, rpeDelta, rpeUnit, pairSelection, pairsFrom, v, maxGap);
+                projection, rpeDelta, rpeUnit, pairSelection, pairsFrom, v, maxGap, timeOffset, extraMetrics);
     }
 }

@@ -34,7 +34,7 @@ final class PlanarEvaluator {
             case NONE, SE2, SIM2, ORIGIN -> true;
             default -> false;
         };
-        return planar && model && o.association() == AssociationMethod.INTERPOLATE
+        return planar && model && !o.extraMetrics() && o.association() == AssociationMethod.INTERPOLATE
                 && (o.rpeUnit() == RpeUnit.SECONDS || o.rpeUnit() == RpeUnit.FRAMES) && o.drift() == null
                 && o.projection() != PlanarProjection.XZ_AFTER_ALIGNMENT;
     }

@@ -10,9 +10,11 @@ import java.util.List;
  * @param segments number of segments
  * @param stepFrames frames between segment starts
  * @param perLength figures per segment length
+ * @param pathLengthM length of the reference path (m); no segment fits when it is shorter than the
+ *     shortest segment length
  */
 public record DriftResult(double transPct, double rotDegPerM, int segments, int stepFrames,
-        List<AtLength> perLength) {
+        List<AtLength> perLength, double pathLengthM) {
 
     /**
      * @param lengthM segment length L (m)

@@ -63,6 +63,7 @@ public final class LengthNormalisedDrift {
                     cnt[li] == 0 ? Double.NaN : Math.toDegrees(sumR[li] / cnt[li]), cnt[li]));
         }
         return new DriftResult(total == 0 ? Double.NaN : 100.0 * totalT / total,
-                total == 0 ? Double.NaN : Math.toDegrees(totalR / total), total, options.stepFrames(), per);
+                total == 0 ? Double.NaN : Math.toDegrees(totalR / total), total, options.stepFrames(), per,
+                n == 0 ? 0.0 : dist[n - 1]);
     }
 }

@@ -51,8 +51,10 @@ public enum Setting {
             + "evo's --sync_method interpolation."),
     MAX_DIFF_S("max_diff_s", "--max-diff", SettingKind.NUMBER, SettingScope.EVALUATION, "S", "s", "all",
             "Max timestamp difference for nearest association (s, > 0; default 0.01)."),
-    T_OFFSET_S("t_offset_s", "--t-offset", SettingKind.NUMBER, SettingScope.EVALUATION, "S", "s", "all",
-            "Offset added to the estimate's timestamps (s; default 0)."),
+    T_OFFSET_S("t_offset_s", "--t-offset", SettingKind.NUMBER_OR_AUTO, SettingScope.EVALUATION, "S|auto", "s",
+            "all", "Offset added to the estimate's timestamps (s; default 0). auto: estimated by cross-correlating "
+            + "the angular speeds within +-2 s, then refined on the ATE; the report gives the value and its "
+            + "uncertainty."),
     MAX_GAP_S("max_gap_s", "--max-gap", SettingKind.NUMBER_OR_AUTO, SettingScope.EVALUATION, "S|auto", "s", "all",
             "Longest reference gap the interpolated association bridges (s, > 0; default auto: 10 median "
             + "reference periods); estimate poses inside longer gaps are dropped, counted and located in the "
@@ -80,6 +82,10 @@ public enum Setting {
             "--all-pairs=all-pairs", "--no-all-pairs=consecutive"),
     PAIRS_FROM("pairs_from", "--pairs-from", SettingKind.CHOICE, SettingScope.EVALUATION, "reference|estimate",
             "", "all", "Trajectory the RPE pairs are chosen on (default estimate, as evo)."),
+    EXTRA_METRICS("extra_metrics", "--extra-metrics", SettingKind.SWITCH, SettingScope.EVALUATION, "", "", "all",
+            "Also report per-axis translation errors (world frame of the reference, signed), the planar heading "
+            + "error and the speed error over the RPE horizon (off by default: the table and the report then have "
+            + "an extra section)."),
     DRIFT("drift", "--drift", SettingKind.SWITCH, SettingScope.EVALUATION, "", "", "all",
             "Compute KITTI-style length-normalised drift (on with convention kitti or any drift setting)."),
     DRIFT_SEGMENT_LENGTHS_M("drift_segment_lengths_m", "--drift-lengths", SettingKind.NUMBERS,
@@ -187,7 +193,7 @@ public enum Setting {
         return switch (kind) {
             case CHOICE -> "one of " + values.replace("|", ", ");
             case NUMBER -> (this == T_OFFSET_S ? "a finite number" : "a number > 0") + u;
-            case NUMBER_OR_AUTO -> "auto or a number > 0" + u;
+            case NUMBER_OR_AUTO -> (this == T_OFFSET_S ? "auto or a finite number" : "auto or a number > 0") + u;
             case INTEGER -> "a whole number >= 1" + u;
             case SWITCH -> "true or false";
             case NUMBERS -> "numbers > 0 separated by commas" + u;
@@ -212,7 +218,7 @@ public enum Setting {
         Object v = switch (kind) {
             case CHOICE -> choice(t);
             case NUMBER -> number(t, this != T_OFFSET_S);
-            case NUMBER_OR_AUTO -> t.equalsIgnoreCase("auto") ? "auto" : number(t, true);
+            case NUMBER_OR_AUTO -> t.equalsIgnoreCase("auto") ? "auto" : number(t, this != T_OFFSET_S);
             case INTEGER -> WHOLE.matcher(t).matches() && Long.parseLong(t) >= 1 && Long.parseLong(t) <= Integer.MAX_VALUE
                     ? Integer.valueOf(Integer.parseInt(t)) : null;
             case SWITCH -> t.equalsIgnoreCase("true") ? Boolean.TRUE : t.equalsIgnoreCase("false") ? Boolean.FALSE : null;

@@ -7,6 +7,7 @@ import org.trajeval.core.assoc.AssociationMethod;
 import org.trajeval.core.assoc.MaxGap;
 import org.trajeval.core.assoc.OverlapPolicy;
 import org.trajeval.core.eval.Convention;
+import org.trajeval.core.eval.TimeOffset;
 import org.trajeval.core.eval.EvaluationOptions;
 import org.trajeval.core.eval.PlanarProjection;
 import org.trajeval.core.io.CsvLayout;
@@ -91,8 +92,10 @@ public final class SettingsResolver {
         if (s.has(Setting.MAX_DIFF_S)) {
             o = o.withMaxDiffS((Double) s.get(Setting.MAX_DIFF_S));
         }
-        if (s.has(Setting.T_OFFSET_S)) {
-            o = o.withTOffsetS((Double) s.get(Setting.T_OFFSET_S));
+        if (s.get(Setting.T_OFFSET_S) instanceof Double offset) {
+            o = o.withTOffsetS(offset);
+        } else if (s.has(Setting.T_OFFSET_S)) {
+            o = o.withTimeOffset(TimeOffset.AUTO);
         }
         if (s.get(Setting.MAX_GAP_S) instanceof Double gap) {
             o = o.withMaxGap(MaxGap.ofSeconds(gap));
@@ -113,6 +116,9 @@ public final class SettingsResolver {
                     : PlanarProjection.XZ_AFTER_ALIGNMENT);
         }
         o = rpe(s, o);
+        if (Boolean.TRUE.equals(s.get(Setting.EXTRA_METRICS))) {
+            o = o.withExtraMetrics(true);
+        }
         if (s.has(Setting.RPE_PAIRS)) {
             o = o.withPairSelection("all-pairs".equals(s.get(Setting.RPE_PAIRS)) ? PairSelection.ALL_PAIRS
                     : PairSelection.CONSECUTIVE);

@@ -341,7 +341,7 @@ public final class SuiteRunner {
             }
         }
         SequencePlot.Trace trace = plot ? trace(ms.name(), seed, reference.trajectory(), est.trajectory(), rep,
-                o.tOffsetS()) : null;
+                rep.association() != null ? rep.association().tOffsetS() : o.tOffsetS()) : null;
         String split = s.split().key();
         if (f != null) {
             return new Outcome(new RunEntry(ms.name(), s.id(), seed, split, rel, "failed",

@@ -20,12 +20,16 @@ import com.fasterxml.jackson.annotation.JsonPropertyOrder;
  * @param ate absolute trajectory error
  * @param rpe relative pose error
  * @param drift length-normalised drift, or {@code null} when not asked
+ * @param extra per-axis, heading and speed errors ({@code extra_metrics}), or {@code null}
+ * @param timeBase s, or frames when both inputs are stamped by index (KITTI without times files):
+ *     then every *_s value and every time in the report counts frames
  * @param coverage share of the reference's time span the associated estimate covers
  * @param warnings what a careful user should know about these numbers (degenerate alignment,
  *     poses dropped in reference gaps, ...), machine-readable
  */
-@JsonPropertyOrder({"schema", "schema_version", "version", "convention", "inputs", "association", "coverage",
-    "alignment", "ate", "rpe", "drift", "warnings"})
+@JsonPropertyOrder({"schema", "schema_version", "version", "convention", "time_base", "inputs", "association",
+    "coverage",
+    "alignment", "ate", "rpe", "drift", "extra", "warnings"})
 @JsonInclude(JsonInclude.Include.NON_NULL)
 public record EvaluationReport(
         @JsonProperty("schema") String schema,
@@ -39,7 +43,15 @@ public record EvaluationReport(
         @JsonProperty("rpe") Rpe rpe,
         @JsonProperty("drift") Drift drift,
         @JsonProperty("coverage") CoverageInfo coverage,
-        @JsonProperty("warnings") java.util.List<Warning> warnings) {
+        @JsonProperty("warnings") java.util.List<Warning> warnings,
+        @JsonProperty("time_base") String timeBase,
+        @JsonProperty("extra") Extra extra) {
+
+    /** @return a copy with another association section */
+    public EvaluationReport withAssociation(AssociationInfo a) {
+        return new EvaluationReport(schema, schemaVersion, version, convention, inputs, a, alignment, ate, rpe, drift,
+                coverage, warnings, timeBase, extra);
+    }
 
     /** @throws NullPointerException never; null warnings (older reports) read as none */
     public EvaluationReport {
@@ -88,9 +100,10 @@ public record EvaluationReport(
      * @param gapLimitS longest reference gap interpolation may bridge (s); null for nearest association
      * @param droppedInGaps estimate poses dropped inside longer reference gaps (part of {@code dropped})
      * @param gaps those gaps, in time order (at most {@link #MAX_GAPS_LISTED})
+     * @param tOffsetAuto how the offset was estimated ({@code --t-offset auto}), or null when given
      */
     @JsonPropertyOrder({"method", "matched", "dropped", "dropped_reference", "max_diff_s", "t_offset_s", "overlap",
-        "max_gap_s", "a_max_mps2", "interp_error_bound_m", "gap_limit_s", "dropped_in_gaps", "gaps"})
+        "max_gap_s", "a_max_mps2", "interp_error_bound_m", "gap_limit_s", "dropped_in_gaps", "gaps", "t_offset_auto"})
     public record AssociationInfo(@JsonProperty("method") String method, @JsonProperty("matched") int matched,
             @JsonProperty("dropped") int dropped, @JsonProperty("dropped_reference") int droppedReference,
             @JsonProperty("max_diff_s") double maxDiffS, @JsonProperty("t_offset_s") double tOffsetS,
@@ -98,9 +111,47 @@ public record EvaluationReport(
             @JsonProperty("a_max_mps2") Double aMaxMps2,
             @JsonProperty("interp_error_bound_m") Double interpErrorBoundM,
             @JsonProperty("gap_limit_s") Double gapLimitS, @JsonProperty("dropped_in_gaps") int droppedInGaps,
-            @JsonProperty("gaps") java.util.List<Gap> gaps) {
+            @JsonProperty("gaps") java.util.List<Gap> gaps,
+            @JsonProperty("t_offset_auto") OffsetEstimate tOffsetAuto) {
         /** Most gaps listed in a report (all are counted). */
         public static final int MAX_GAPS_LISTED = 100;
+
+        /** @return a copy with the offset used and how it was estimated */
+        public AssociationInfo withOffset(double offsetS, OffsetEstimate how) {
+            return new AssociationInfo(method, matched, dropped, droppedReference, maxDiffS, offsetS, overlap, maxGapS,
+                    aMaxMps2, interpErrorBoundM, gapLimitS, droppedInGaps, gaps, how);
+        }
+    }
+
+    /**
+     * Errors beside ATE and RPE (see {@code org.trajeval.core.metric.ExtraMetrics}).
+     *
+     * @param transXM signed x error p_est - p_ref in the reference's world frame (m)
+     * @param transYM signed y error (m)
+     * @param transZM signed z error (m)
+     * @param headingRad planar heading error |wrap(yaw_est - yaw_ref)| (rad)
+     * @param speedMps speed error |v_est| - |v_ref| over the horizon (m/s)
+     * @param speedHorizonS that horizon (s)
+     */
+    @JsonPropertyOrder({"trans_x_m", "trans_y_m", "trans_z_m", "heading_rad", "speed_mps", "speed_horizon_s"})
+    public record Extra(@JsonProperty("trans_x_m") Stats transXM, @JsonProperty("trans_y_m") Stats transYM,
+            @JsonProperty("trans_z_m") Stats transZM, @JsonProperty("heading_rad") Stats headingRad,
+            @JsonProperty("speed_mps") Stats speedMps, @JsonProperty("speed_horizon_s") double speedHorizonS) {
+    }
+
+    /**
+     * A clock offset estimated from the data ({@code --t-offset auto}); the offset used is
+     * {@code association.t_offset_s}.
+     *
+     * @param correlationS the peak of the angular-speed cross-correlation (s)
+     * @param uncertaintyS half-width of that peak (s)
+     * @param correlation normalised correlation at the peak
+     * @param method how it was found
+     */
+    @JsonPropertyOrder({"correlation_s", "uncertainty_s", "correlation", "method"})
+    public record OffsetEstimate(@JsonProperty("correlation_s") double correlationS,
+            @JsonProperty("uncertainty_s") double uncertaintyS, @JsonProperty("correlation") double correlation,
+            @JsonProperty("method") String method) {
     }
 
     /**
@@ -197,11 +248,25 @@ public record EvaluationReport(
      * @param stepFrames frames between segment starts
      * @param perLength the same figures per segment length
      */
-    @JsonPropertyOrder({"trans_pct", "rot_deg_per_m", "segments", "step_frames", "per_length"})
+    @JsonPropertyOrder({"trans_pct", "rot_deg_per_m", "rot_deg_per_100m", "rot_rad_per_m", "segments", "step_frames",
+        "path_length_m", "per_length"})
     public record Drift(@JsonProperty("trans_pct") Double transPct,
             @JsonProperty("rot_deg_per_m") Double rotDegPerM, @JsonProperty("segments") int segments,
             @JsonProperty("step_frames") int stepFrames,
-            @JsonProperty("per_length") java.util.List<DriftAtLength> perLength) {
+            @JsonProperty("per_length") java.util.List<DriftAtLength> perLength,
+            @JsonProperty("path_length_m") Double pathLengthM) {
+
+        /** @return rotational drift in KITTI's unit, deg per 100 m (null without segments) */
+        @JsonProperty("rot_deg_per_100m")
+        public Double rotDegPer100m() {
+            return rotDegPerM == null ? null : 100.0 * rotDegPerM;
+        }
+
+        /** @return rotational drift in SI, rad/m (null without segments) */
+        @JsonProperty("rot_rad_per_m")
+        public Double rotRadPerM() {
+            return rotDegPerM == null ? null : Math.toRadians(rotDegPerM);
+        }
     }
 
     /**

@@ -50,22 +50,25 @@ public final class SuiteReportFiles {
     /**
      * Parses a {@code report.json}.
      *
-     * @throws IllegalArgumentException when the text is not a suite report of a known schema version
+     * @throws org.trajeval.core.InputException (UNKNOWN_FORMAT) when the text is not a suite report of a
+     *     known schema version
      */
     public static SuiteReport parse(String json, String source) {
         SuiteReport r;
         try {
             r = READER.readValue(json, SuiteReport.class);
         } catch (JsonProcessingException e) {
-            throw new IllegalArgumentException(source + ": not a suite report: " + e.getOriginalMessage(), e);
+            throw new org.trajeval.core.InputException(source, 0, null, org.trajeval.core.InputProblem.UNKNOWN_FORMAT,
+                    "not a suite report: " + e.getOriginalMessage(), null, e);
         }
         if (!SuiteReport.SCHEMA.equals(r.schema())) {
-            throw new IllegalArgumentException(source + ": not a suite report (schema " + SuiteReport.SCHEMA
-                    + " expected), found \"" + r.schema() + "\"");
+            throw new org.trajeval.core.InputException(source, 0, "schema", org.trajeval.core.InputProblem.UNKNOWN_FORMAT,
+                    "not a suite report (schema " + SuiteReport.SCHEMA + " expected)", String.valueOf(r.schema()));
         }
         if (r.schemaVersion() != SuiteReport.SCHEMA_VERSION) {
-            throw new IllegalArgumentException(source + ": suite report schema version " + SuiteReport.SCHEMA_VERSION
-                    + " expected, found \"" + r.schemaVersion() + "\"");
+            throw new org.trajeval.core.InputException(source, 0, "schema_version",
+                    org.trajeval.core.InputProblem.UNKNOWN_FORMAT, "suite report schema version "
+                    + SuiteReport.SCHEMA_VERSION + " expected", String.valueOf(r.schemaVersion()));
         }
         return r;
     }

@@ -45,7 +45,7 @@ public final class PlanarTrajectory implements Trajectory {
         if (n < 0 || t.length < n || x.length < n || y.length < n || yaw.length < n) {
             throw new IllegalArgumentException("every column needs at least " + n + " values");
         }
-        TimestampCheck.requireStrictlyIncreasing(t, n);
+        TimestampCheck.requireNonDecreasing(t, n);
         TimestampCheck.requireFinite("x", x, n);
         TimestampCheck.requireFinite("y", y, n);
         TimestampCheck.requireFinite("yaw", yaw, n);

@@ -33,7 +33,7 @@ public final class SpatialTrajectory implements Trajectory {
     public static SpatialTrajectory of(double[] t, double[] x, double[] y, double[] z,
             double[] qw, double[] qx, double[] qy, double[] qz) {
         TimestampCheck.requireSameLength(t.length, x, y, z, qw, qx, qy, qz);
-        TimestampCheck.requireStrictlyIncreasing(t);
+        TimestampCheck.requireNonDecreasing(t);
         for (double[] c : new double[][] {x, y, z, qw, qx, qy, qz}) {
             TimestampCheck.requireFinite("pose", c);
         }
@@ -60,7 +60,7 @@ public final class SpatialTrajectory implements Trajectory {
      */
     public static SpatialTrajectory ofMatrices(double[] t, double[] x, double[] y, double[] z, double[] r) {
         TimestampCheck.requireSameLength(t.length, x, y, z);
-        TimestampCheck.requireStrictlyIncreasing(t);
+        TimestampCheck.requireNonDecreasing(t);
         TimestampCheck.requireFinite("x", x);
         TimestampCheck.requireFinite("y", y);
         TimestampCheck.requireFinite("z", z);

@@ -1,6 +1,9 @@
 package org.trajeval.core.traj;
 
-/** Checks shared by both trajectory types: finite values and strictly increasing timestamps. */
+/**
+ * Checks shared by both trajectory types: finite values and non-decreasing timestamps (equal
+ * stamps are allowed: readers refuse them unless told to keep them, as evo does).
+ */
 final class TimestampCheck {
     private TimestampCheck() {
     }
@@ -13,11 +16,11 @@ final class TimestampCheck {
         }
     }
 
-    static void requireStrictlyIncreasing(double[] t) {
-        requireStrictlyIncreasing(t, t.length);
+    static void requireNonDecreasing(double[] t) {
+        requireNonDecreasing(t, t.length);
     }
 
-    static void requireStrictlyIncreasing(double[] t, int n) {
+    static void requireNonDecreasing(double[] t, int n) {
         for (int i = 0; i < n; i++) {
             if (!Double.isFinite(t[i])) {
                 throw new IllegalArgumentException("timestamp " + i + " is not finite: " + t[i]);

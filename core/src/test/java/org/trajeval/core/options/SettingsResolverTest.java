@@ -157,6 +157,20 @@ class SettingsResolverTest {
     }
 
     @Test
+    void autoWordsAndNumbersForOffsetAndMaxGap() {
+        EvaluationOptions o = SettingsResolver.evaluationOptions(file("t_offset_s", "auto", "max_gap_s", "0.5",
+                "extra_metrics", "true"), DataKind.PLANAR);
+        assertEquals(org.trajeval.core.eval.TimeOffset.AUTO, o.timeOffset());
+        assertEquals(org.trajeval.core.assoc.MaxGap.ofSeconds(0.5), o.maxGap());
+        assertTrue(o.extraMetrics());
+        o = SettingsResolver.evaluationOptions(file("t_offset_s", "-0.25", "max_gap_s", "auto"), DataKind.PLANAR);
+        assertEquals(-0.25, o.tOffsetS(), 0.0);
+        assertEquals(org.trajeval.core.assoc.MaxGap.DEFAULT, o.maxGap());
+        assertThrows(InputException.class, () -> file("max_gap_s", "-1"));
+        assertThrows(InputException.class, () -> file("t_offset_s", "later"));
+    }
+
+    @Test
     void canonicalTextIsStableAndInTableOrder() {
         assertEquals("convention=evo;max_diff_s=0.02;rpe_unit=frames",
                 file("rpe_unit", "FRAMES", "max_diff_s", "2e-2", "convention", "evo").canonical());

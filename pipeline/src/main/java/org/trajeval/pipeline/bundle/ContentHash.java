@@ -26,8 +26,18 @@ public record ContentHash(String reference, String estimate, String content) {
         String ref = ofFile(job.reference());
         String est = ofFile(job.estimate());
         var m = job.metadata();
+        String settings = job.settings().canonical();
+        if (job.folder() != null) {
+            // a times file named by the settings is an input too: its bytes change the run
+            for (org.trajeval.core.options.Setting t : new org.trajeval.core.options.Setting[] {
+                org.trajeval.core.options.Setting.REF_TIMES, org.trajeval.core.options.Setting.EST_TIMES}) {
+                if (job.settings().has(t)) {
+                    settings += ";" + t.key() + "_sha256=" + ofFile(job.folder().resolve((String) job.settings().get(t)));
+                }
+            }
+        }
         String identity = String.join("\n", m.runId(), String.valueOf(m.robotId()), String.valueOf(m.sequence()),
-                String.valueOf(m.method()), String.valueOf(m.seed()), job.settings().canonical(), ref, est);
+                String.valueOf(m.method()), String.valueOf(m.seed()), settings, ref, est);
         return new ContentHash(ref, est, hex(digest().digest(identity.getBytes(StandardCharsets.UTF_8))));
     }
 
