@@ -105,8 +105,10 @@ public class AlignmentWarningsTest {
                 new double[4], new double[] {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 0, 0, 1, 0, 0, 0, 1,
                     1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 0, 0, 1, 0, 0, 0, 1});
         double[] sd = AlignmentCheck.principalSpreads(p, 4);
-        assertEquals(0.5, sd[0], 1e-12);
-        assertEquals(0.5, sd[1], 1e-12);
-        assertEquals(0.0, sd[2], 1e-7);
+        // the closed form loses digits when two eigenvalues coincide (acos near its ends): 1e-6 m is plenty
+        // against the 1e-3 ratio the check uses
+        assertEquals(0.5, sd[0], 1e-6);
+        assertEquals(0.5, sd[1], 1e-6);
+        assertEquals(0.0, sd[2], 1e-6);
     }
 }
