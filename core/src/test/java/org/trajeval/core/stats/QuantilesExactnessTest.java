@@ -7,7 +7,7 @@ import org.junit.jupiter.api.Test;
 /**
  * Every quantile and tail the statistics use, against 50-digit references.
  *
- * <p>Source of every reference value: mpmath 1.3 at {@code mp.dps = 50} (script
+ * <p>Source of every reference value: mpmath 1.4.1 at {@code mp.dps = 50} (script
  * {@code quantiles.py}, run once by hand in a throwaway venv, never at test time), with the inputs
  * taken as the exact doubles Java passes (alpha = 1 - level, q = alpha/2 as doubles):
  * <ul>
