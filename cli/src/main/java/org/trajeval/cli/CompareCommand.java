@@ -199,7 +199,7 @@ public final class CompareCommand implements Callable<Integer> {
                 if (c.planning() != null && c.planning().targetDifference() != null) {
                     out.printf(Locale.ROOT, "%s vs %s on %s: detecting a mean difference of %s needs %s sequences "
                             + "(s_d = %s)%n", c.methodA(), c.methodB(), c.metric(),
-                            SuiteOutput.num(c.planning().targetDifference()), c.planning().sequencesNeeded() == null
+                            c.planning().targetDifference(), c.planning().sequencesNeeded() == null
                                     ? "more than 10^6" : Integer.toString(c.planning().sequencesNeeded()),
                             SuiteOutput.num(c.planning().sdDifference()));
                 }
