@@ -1,4 +1,4 @@
-package org.trajeval.core.report.html;
+package org.trajeval.figures;
 
 import java.util.List;
 import org.trajeval.core.report.SuiteReport;
