@@ -186,7 +186,7 @@ public final class CompareCommand implements Callable<Integer> {
                     c.wilcoxon() == null ? "-" : SuiteOutput.num(c.wilcoxon().pValue()),
                     c.holm() == null ? "-" : SuiteOutput.num(c.holm().pAdjusted()),
                     c.planning() == null ? "-" : SuiteOutput.num(c.planning().minDetectableDifference()),
-                    testLabel(c));
+                    c.testLabel());
         }
         if (!cs.isEmpty()) {
             out.println("n: paired sequences; nz: non-zero differences (what the Wilcoxon test ranks); lower is better "
@@ -205,18 +205,6 @@ public final class CompareCommand implements Callable<Integer> {
                 }
             }
         }
-    }
-
-    /** @return a short name of the test a row rests on, with the Wilcoxon variant */
-    static String testLabel(Comparison c) {
-        return switch (c.test()) {
-            case "wilcoxon_exact" -> "Wilcoxon exact";
-            case "wilcoxon_normal_approximation" -> "Wilcoxon normal approx.";
-            case "t_interval" -> "t-interval (Wilcoxon " + (c.wilcoxon() == null ? "-"
-                    : c.wilcoxon().method().replace('_', ' ').replace("no nonzero differences", "all d = 0")) + ")";
-            case "bootstrap_descriptive" -> "bootstrap, descriptive (nz < 6)";
-            default -> "none (n < 2)";
-        };
     }
 
     private static String bounds(SuiteReport.Bounds b) {

@@ -45,7 +45,8 @@ public final class SuiteHtml {
                 .append(".warn{background:#fff3cd;border:1px solid #e0b000;padding:0.6em 1em;margin:0.5em 0}\n")
                 .append(".bad{background:#fde2e1;border:1px solid #d33;padding:0.6em 1em;margin:0.5em 0}\n")
                 .append(".charts img{margin:4px;border:1px solid #ddd}.small{color:#666;font-size:0.9em}\n")
-                .append("code{background:#f6f6f6;padding:0 3px}\n</style></head><body>\n");
+                .append("code{background:#f6f6f6;padding:0 3px}\n")
+                .append(".wide{overflow-x:auto}.wide td{white-space:nowrap}\n</style></head><body>\n");
         h.append("<h1>Benchmark suite: ").append(esc(p.dataset())).append("</h1>\n");
         h.append("<p class=\"small\">trajeval ").append(esc(r.version())).append(", report schema ")
                 .append(esc(r.schema())).append(" v").append(r.schemaVersion()).append(", manifest <code>")
@@ -91,8 +92,10 @@ public final class SuiteHtml {
         kv(h, "budget", b.device() + (b.cores() == null ? "" : ", " + b.cores() + " cores") + ", real-time factor "
                 + fmt(b.realTimeFactor()) + ", memory cap " + b.memoryCapMib() + " MiB");
         kv(h, "statistics", "confidence " + fmt(p.analysis().confidenceLevel()) + ", bootstrap B = "
-                + p.analysis().bootstrapResamples() + " (seed " + p.analysis().seed() + "), Wilcoxon exact up to n = "
-                + p.analysis().wilcoxonExactMaxN());
+                + p.analysis().bootstrapResamples() + " (seed " + p.analysis().seed() + "), Wilcoxon exact up to "
+                + p.analysis().wilcoxonExactMaxN() + " non-zero differences; pairwise p-values Holm-adjusted per metric; "
+                + "failure-rate intervals clustered by sequence (Korn-Graubard); planning at power "
+                + fmt(powerOf(r)));
         h.append("</tbody></table>\n");
     }
 
@@ -153,11 +156,11 @@ public final class SuiteHtml {
                 .append("sequences; Hodges-Lehmann: median of the Walsh averages with its exact or asymptotic ")
                 .append("interval; Holm: p adjusted over the metric's pairwise tests; detectable: the smallest mean ")
                 .append("difference this n detects with ").append(pct(powerOf(r))).append(" power.</p>\n")
-                .append("<table><thead><tr><th class=\"l\">A</th><th class=\"l\">B</th><th class=\"l\">metric</th>")
-                .append("<th>n</th><th>non-zero</th><th>mean d</th><th>t-interval ").append(pct(level))
+                .append("<div class=\"wide\"><table><thead><tr><th class=\"l\">A</th><th class=\"l\">B</th>")
+                .append("<th class=\"l\">metric</th><th>n</th><th>non-zero</th><th>mean d</th><th>t-interval ").append(pct(level))
                 .append("</th><th>bootstrap ").append(pct(level)).append("</th><th>Hodges-Lehmann ").append(pct(level))
                 .append("</th><th>A better</th><th>Wilcoxon p</th><th>Holm p</th><th>detectable</th>")
-                .append("<th class=\"l\">which test applies</th></tr></thead><tbody>\n");
+                .append("<th class=\"l\">test (hover: why)</th></tr></thead><tbody>\n");
         for (Comparison c : r.comparisons()) {
             SuiteReport.HodgesLehmannEntry hl = c.hodgesLehmann();
             h.append("<tr><td class=\"l\">").append(esc(c.methodA())).append("</td><td class=\"l\">")
@@ -177,9 +180,18 @@ public final class SuiteHtml {
                     .append("</td><td>").append(c.holm() == null ? "&mdash;" : fmt(c.holm().pAdjusted()))
                     .append("</td><td>").append(c.planning() == null ? "&mdash;"
                             : fmt(c.planning().minDetectableDifference()))
-                    .append("</td><td class=\"l small\">").append(esc(c.primary())).append("</td></tr>\n");
+                    .append("</td><td class=\"l\" title=\"").append(esc(c.primary())).append("\">")
+                    .append(esc(c.testLabel())).append("</td></tr>\n");
         }
-        h.append("</tbody></table>\n");
+        h.append("</tbody></table></div>\n<ul class=\"small\">\n");
+        java.util.Map<String, List<String>> why = new java.util.LinkedHashMap<>();
+        for (Comparison c : r.comparisons()) {
+            why.computeIfAbsent(c.primary(), k -> new ArrayList<>()).add(c.methodA() + "-" + c.methodB() + " "
+                    + c.metric());
+        }
+        why.forEach((reason, rows) -> h.append("<li>").append(esc(reason)).append(": ")
+                .append(esc(String.join(", ", rows))).append("</li>\n"));
+        h.append("</ul>\n");
     }
 
     private static double powerOf(SuiteReport r) {

@@ -363,6 +363,21 @@ public record SuiteReport(
             @JsonProperty("test") String test, @JsonProperty("primary") String primary,
             @JsonProperty("per_sequence") List<Paired> perSequence) {
 
+        /** @return a short name of the test this row rests on, with the Wilcoxon variant, for tables */
+        @com.fasterxml.jackson.annotation.JsonIgnore
+        public String testLabel() {
+            String variant = wilcoxon == null ? "-" : wilcoxon.method().replace('_', ' ')
+                    .replace("no nonzero differences", "all d = 0");
+            return switch (test == null ? "" : test) {
+                case "wilcoxon_exact" -> "Wilcoxon exact";
+                case "wilcoxon_normal_approximation" -> "Wilcoxon normal approx.";
+                case "t_interval" -> "t-interval (Wilcoxon " + variant + ")";
+                case "bootstrap_descriptive" -> "bootstrap, descriptive (nz < 6)";
+                case "none" -> "none (n < 2)";
+                default -> "-";
+            };
+        }
+
         /** @return this comparison with its Holm-adjusted p-value */
         public Comparison withHolm(HolmAdjusted h) {
             return new Comparison(methodA, methodB, metric, better, n, nonzeroDifferences, meanDifference, tInterval,
