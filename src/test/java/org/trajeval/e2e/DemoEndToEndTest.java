@@ -65,6 +65,18 @@ class DemoEndToEndTest {
     }
 
     @Test
+    void demoReportShowsTheRankDiagramAndEffectSizes() throws IOException {
+        Path report = dir.resolve("demo/report");
+        String html = Files.readString(report.resolve("report.html"));
+        for (String metric : new String[] {"ate_trans_rmse_m", "rpe_trans_rmse_m", "score"}) {
+            String svg = Files.readString(report.resolve("ranks_" + metric + ".svg"));
+            assertTrue(svg.startsWith("<svg") && html.contains(svg.strip()), metric);
+        }
+        assertTrue(html.contains("Hodges-Lehmann") && html.contains("Friedman") && html.contains("Holm p"), "sections");
+        assertTrue(out.contains("Friedman chi2") && out.contains("Hodges-Lehmann"), out);
+    }
+
+    @Test
     void htmlIsSelfContained() throws IOException {
         String html = Files.readString(dir.resolve("demo/report/report.html"));
         assertFalse(Pattern.compile("(src|href)\\s*=\\s*\"(https?:)?//", Pattern.CASE_INSENSITIVE).matcher(html).find(),

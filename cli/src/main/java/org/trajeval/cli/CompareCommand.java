@@ -9,8 +9,10 @@ import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.Callable;
+import org.trajeval.core.protocol.MethodRanking;
 import org.trajeval.core.protocol.SuiteAnalysis;
 import org.trajeval.core.report.ReportJson;
 import org.trajeval.core.report.SuiteReport;
@@ -28,8 +30,10 @@ import picocli.CommandLine.Spec;
  * report or from two, over their common evaluated sequences and common seeds.
  */
 @Command(name = "compare", mixinStandardHelpOptions = true, sortOptions = false,
-        description = {"Paired comparison of two methods from suite reports (report.json): mean difference per "
-            + "sequence with the t-interval, a seeded bootstrap over sequences and the Wilcoxon signed-rank test.",
+        description = {"Paired comparison of two methods from suite reports (report.json), with the suite's machinery: "
+            + "mean difference per sequence with the t-interval, a seeded bootstrap over sequences, the Wilcoxon "
+            + "signed-rank test (Holm family of one test per metric), the Hodges-Lehmann estimate with its interval, "
+            + "the share of sequences A wins and the planning figures (--power, --detect).",
             "With one report, name the two methods with -a and -b (not needed when it has exactly two). With two "
                 + "reports, -a picks the method of REPORT_A and -b that of REPORT_B (not needed when each has one)."},
         exitCodeListHeading = "%nExit codes:%n",
@@ -101,12 +105,20 @@ public final class CompareCommand implements Callable<Integer> {
         if (sameScore) {
             keys.add(SuiteAnalysis.SCORE);
         }
-        stats.check();
-        SuiteAnalysis.Settings settings = new SuiteAnalysis.Settings(stats.seed, stats.confidence, stats.resamples);
-        List<Comparison> comparisons = new ArrayList<>();
-        for (int i = 0; i < keys.size(); i++) {
-            comparisons.add(SuiteAnalysis.compare(labelA, runsA, labelB, runsB, sequences, keys.get(i), settings, i));
+        SuiteAnalysis.Settings settings = stats.analysis();
+        for (String k : settings.targets().keySet()) {
+            if (!keys.contains(k)) {
+                throw UsageProblem.of("--detect", "--detect: the reports have no compared metric '" + k
+                        + "'; expected one of " + keys, k);
+            }
         }
+        List<Comparison> raw = new ArrayList<>();
+        for (int i = 0; i < keys.size(); i++) {
+            raw.add(SuiteAnalysis.compare(labelA, runsA, labelB, runsB, sequences, keys.get(i), settings, i));
+        }
+        // the same machinery as the suite: each metric's pairwise tests form one Holm family (here of one test)
+        List<Comparison> comparisons = MethodRanking.of(List.of(labelA, labelB), Map.of(labelA, runsA, labelB, runsB),
+                sequences, keys, raw, settings.level()).comparisons();
         if (json) {
             out.print(ReportJson.toJson(comparisons));
             out.println();
@@ -155,22 +167,44 @@ public final class CompareCommand implements Callable<Integer> {
                 null);
     }
 
-    /** Prints one line per comparison. */
+    /**
+     * Prints one line per comparison, each with its own n, number of non-zero differences and the test
+     * (and variant) its conclusion rests on.
+     */
     static void printComparisons(List<Comparison> cs, double level, PrintWriter out) {
         String pct = String.format(Locale.ROOT, "%.0f%%", 100 * level);
-        out.printf(Locale.ROOT, "%-10s %-10s %-18s %3s %11s %-24s %-24s %10s%n", "A", "B", "metric", "n", "mean A-B",
-                "t-interval " + pct, "bootstrap " + pct, "Wilcoxon p");
+        out.printf(Locale.ROOT, "%-10s %-10s %-18s %3s %3s %11s %-24s %-24s %-34s %-9s %10s %10s %10s  %s%n", "A", "B",
+                "metric", "n", "nz", "mean A-B", "t-interval " + pct, "bootstrap " + pct,
+                "Hodges-Lehmann [" + pct + "]", "A better", "Wilcoxon p", "Holm p", "detectable", "test");
         for (Comparison c : cs) {
-            out.printf(Locale.ROOT, "%-10s %-10s %-18s %3d %11s %-24s %-24s %10s%n", c.methodA(), c.methodB(),
-                    c.metric(), c.n(), SuiteOutput.num(c.meanDifference()), bounds(c.tInterval()),
-                    bounds(c.bootstrap()), c.wilcoxon() == null ? "-" : SuiteOutput.num(c.wilcoxon().pValue())
-                            + (c.wilcoxon().method().equals("exact") ? "" : "*"));
+            SuiteReport.HodgesLehmannEntry hl = c.hodgesLehmann();
+            out.printf(Locale.ROOT, "%-10s %-10s %-18s %3d %3d %11s %-24s %-24s %-34s %-9s %10s %10s %10s  %s%n",
+                    c.methodA(), c.methodB(), c.metric(), c.n(), c.nonzeroDifferences(),
+                    SuiteOutput.num(c.meanDifference()), bounds(c.tInterval()), bounds(c.bootstrap()),
+                    hl == null ? "-" : SuiteOutput.num(hl.estimate()) + " " + bounds(new SuiteReport.Bounds(hl.lower(),
+                            hl.upper())) + (hl.method().equals("exact") ? "" : " asym"),
+                    c.wins() == null ? "-" : c.wins().aBetter() + "/" + c.n(),
+                    c.wilcoxon() == null ? "-" : SuiteOutput.num(c.wilcoxon().pValue()),
+                    c.holm() == null ? "-" : SuiteOutput.num(c.holm().pAdjusted()),
+                    c.planning() == null ? "-" : SuiteOutput.num(c.planning().minDetectableDifference()),
+                    c.testLabel());
         }
         if (!cs.isEmpty()) {
-            out.println("which test applies (n = " + cs.get(0).n() + "): " + cs.get(0).primary());
-            out.println("lower is better for error metrics (A-B < 0 favours A); higher is better for the score."
-                    + (cs.stream().anyMatch(c -> c.wilcoxon() != null && !c.wilcoxon().method().equals("exact"))
-                            ? " * normal approximation" : ""));
+            out.println("n: paired sequences; nz: non-zero differences (what the Wilcoxon test ranks); lower is better "
+                    + "for error metrics (A-B < 0 favours A), higher for the score; Holm: p adjusted over the metric's "
+                    + "pairwise tests; detectable: smallest mean difference detected with "
+                    + (cs.get(0).planning() == null ? "80" : String.format(Locale.ROOT, "%.0f",
+                            100 * cs.get(0).planning().power())) + "% power; test: what each row's conclusion rests "
+                    + "on (report.json and report.html say why)");
+            for (Comparison c : cs) {
+                if (c.planning() != null && c.planning().targetDifference() != null) {
+                    out.printf(Locale.ROOT, "%s vs %s on %s: detecting a mean difference of %s needs %s sequences "
+                            + "(s_d = %s)%n", c.methodA(), c.methodB(), c.metric(),
+                            c.planning().targetDifference(), c.planning().sequencesNeeded() == null
+                                    ? "more than 10^6" : Integer.toString(c.planning().sequencesNeeded()),
+                            SuiteOutput.num(c.planning().sdDifference()));
+                }
+            }
         }
     }
 

@@ -18,7 +18,8 @@ import picocli.CommandLine.Spec;
         description = {"Runs a benchmark suite: every (method, sequence, seed) of the manifest scored with the same "
             + "protocol, failures counted, split and seed hygiene checked, per-method statistics and paired "
             + "comparisons with intervals.",
-            "Writes report.json, runs.csv, methods.csv, comparisons.csv and report.html into --out."},
+            "Writes report.json, runs.csv, methods.csv, comparisons.csv, report.html and, with three or more "
+                + "methods, one average-rank diagram per metric (ranks_METRIC.svg) into --out."},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success", "1:internal error (a bug; rerun with --verbose)",
             "2:bad manifest or input (one line names the key path or file and what was expected)",
@@ -54,7 +55,7 @@ public final class SuiteCommand implements Callable<Integer> {
         try {
             stats.check();
             r = SuiteOutput.runAndWrite(manifest, out, new SuiteRunner.Settings(stats.seed, allowLeakage,
-                    stats.confidence, stats.resamples), threads == null ? Runtime.getRuntime().availableProcessors() : threads, err);
+                    stats.confidence, stats.resamples, stats.power, stats.detect), threads == null ? Runtime.getRuntime().availableProcessors() : threads, err);
         } catch (SplitLeakageException e) {
             err.println("trajeval: " + e.getMessage());
             err.flush();

@@ -10,6 +10,7 @@ import org.trajeval.core.protocol.RunEngine;
 import org.trajeval.core.protocol.SuiteRunner;
 import org.trajeval.core.report.SuiteReport;
 import org.trajeval.core.report.SuiteReportFiles;
+import org.trajeval.figures.RankDiagramSvg;
 import org.trajeval.figures.SuiteHtml;
 
 /** Runs a suite and writes its report folder; shared by {@code suite} and {@code demo}. */
@@ -29,6 +30,7 @@ final class SuiteOutput {
                     .run(manifest, settings);
             SuiteReportFiles.write(result.report(), out);
             SuiteHtml.write(result.report(), result.plots(), out);
+            RankDiagramSvg.writeAll(result.report(), out);
             return result.report();
         } finally {
             pool.shutdownNow();
@@ -41,8 +43,8 @@ final class SuiteOutput {
             out.println("WARNING: " + w);
         }
         List<String> keys = r.protocol().score().stream().map(SuiteReport.ScoreTerm::metric).toList();
-        StringBuilder head = new StringBuilder(String.format(Locale.ROOT, "%-12s %5s %5s %-24s %-16s", "method",
-                "runs", "fail", "failure rate [Wilson]", "score (sd)"));
+        StringBuilder head = new StringBuilder(String.format(Locale.ROOT, "%-12s %5s %5s %-24s %-16s %-16s",
+                "method", "runs", "fail", "failure rate [Wilson]", "clustered [K-G]", "score (sd)"));
         for (String k : keys) {
             head.append(String.format(Locale.ROOT, " %18s", k));
         }
@@ -50,8 +52,11 @@ final class SuiteOutput {
         for (SuiteReport.MethodSummary m : r.methods()) {
             String rate = m.failureRate() == null ? "-" : String.format(Locale.ROOT, "%.3f [%.3f, %.3f]",
                     m.failureRate().estimate(), m.failureRate().wilson().lower(), m.failureRate().wilson().upper());
-            StringBuilder line = new StringBuilder(String.format(Locale.ROOT, "%-12s %5d %5d %-24s %-16s", m.name(),
-                    m.runs(), m.failures(), rate, num(m.score().mean()) + " (" + num(m.score().sd()) + ")"));
+            SuiteReport.ClusteredBounds cl = m.failureRate() == null ? null : m.failureRate().clustered();
+            String clustered = cl == null ? "-" : String.format(Locale.ROOT, "[%.3f, %.3f]", cl.lower(), cl.upper());
+            StringBuilder line = new StringBuilder(String.format(Locale.ROOT, "%-12s %5d %5d %-24s %-16s %-16s",
+                    m.name(), m.runs(), m.failures(), rate, clustered,
+                    num(m.score().mean()) + " (" + num(m.score().sd()) + ")"));
             for (String k : keys) {
                 SuiteReport.MetricSummary ms = m.metrics().stream().filter(x -> x.metric().equals(k)).findFirst()
                         .orElse(null);
@@ -60,7 +65,36 @@ final class SuiteOutput {
             out.println(line);
         }
         out.println();
+        out.println("failure rate: [Wilson] treats every run as independent; [K-G] treats the seeds of one sequence "
+                + "as a cluster (Korn-Graubard), the interval to quote");
+        out.println();
         CompareCommand.printComparisons(r.comparisons(), r.protocol().analysis().confidenceLevel(), out);
+        printRankings(r.rankings(), out);
+    }
+
+    /** Prints, per metric, the Friedman and Iman-Davenport tests, the average ranks and the groups. */
+    static void printRankings(List<SuiteReport.Ranking> rankings, PrintWriter out) {
+        if (rankings == null || rankings.isEmpty()) {
+            return;
+        }
+        out.println();
+        out.println("all methods at once (rank 1 = best; groups: no pair differs after Holm over the metric's "
+                + "pairwise Wilcoxon tests):");
+        for (SuiteReport.Ranking k : rankings) {
+            if (k.friedman() == null) {
+                out.printf(Locale.ROOT, "%-18s not ranked: %d sequence(s) where every method has a value%n", k.metric(),
+                        k.n());
+                continue;
+            }
+            StringBuilder ranks = new StringBuilder();
+            k.methods().stream().sorted(java.util.Comparator.comparingDouble(SuiteReport.RankedMethod::averageRank))
+                    .forEach(m -> ranks.append(String.format(Locale.ROOT, " %s %.2f", m.name(), m.averageRank())));
+            out.printf(Locale.ROOT, "%-18s n = %d  Friedman chi2 = %s p = %s  Iman-Davenport F = %s p = %s  ranks:%s"
+                    + "  groups: %s%n", k.metric(), k.n(), num(k.friedman().statistic()),
+                    num(k.friedman().pValue()), k.imanDavenport().statistic() == null ? "inf"
+                            : num(k.imanDavenport().statistic()), num(k.imanDavenport().pValue()), ranks,
+                    k.groups().isEmpty() ? "none (every pair differs)" : k.groups().toString());
+        }
     }
 
     static String num(Double v) {

@@ -47,7 +47,8 @@ class SuiteCommandsTest {
 
     @Test
     void suiteWritesEveryReportFile() {
-        for (String f : new String[] {"report.json", "runs.csv", "methods.csv", "comparisons.csv", "report.html"}) {
+        for (String f : new String[] {"report.json", "runs.csv", "methods.csv", "comparisons.csv", "report.html",
+            "ranks_score.svg", "ranks_ate_trans_rmse_m.svg"}) {
             assertTrue(Files.isRegularFile(dir.resolve("out").resolve(f)), f);
         }
     }
@@ -79,8 +80,19 @@ class SuiteCommandsTest {
         assertEquals("ate_trans_rmse_m", cs.get(0).get("metric").asText());
         assertEquals(8, cs.get(0).get("n").asInt());
         assertTrue(cs.get(0).get("t_interval").get("upper").asDouble() < 0);
-        Run table = run("compare", report.toString(), "-a", "alpha", "-b", "gamma");
-        assertTrue(table.out().contains("which test applies (n = 8)"), table.out());
+        assertEquals(8, cs.get(0).get("nonzero_differences").asInt());
+        assertEquals("wilcoxon_exact", cs.get(0).get("test").asText());
+        assertEquals(1, cs.get(0).get("holm").get("m").asInt()); // compare: a family of one test per metric
+        assertEquals("exact", cs.get(0).get("hodges_lehmann").get("method").asText());
+        Run table = run("compare", report.toString(), "-a", "alpha", "-b", "gamma", "--detect",
+                "ate_trans_rmse_m=0.05");
+        // one test label per row, not one line for all
+        assertEquals(3, table.out().lines().filter(l -> l.startsWith("alpha") && l.endsWith("Wilcoxon exact")).count(),
+                table.out());
+        assertTrue(table.out().contains("on ate_trans_rmse_m: detecting a mean difference of 0.05 needs"), table.out());
+        Run unknown = run("compare", report.toString(), "-a", "alpha", "-b", "gamma", "--detect", "speed=1");
+        assertEquals(ExitCodes.BAD_INPUT, unknown.code());
+        assertTrue(unknown.err().contains("--detect: the reports have no compared metric 'speed'"), unknown.err());
     }
 
     @Test

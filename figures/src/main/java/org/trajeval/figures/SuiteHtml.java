@@ -45,7 +45,8 @@ public final class SuiteHtml {
                 .append(".warn{background:#fff3cd;border:1px solid #e0b000;padding:0.6em 1em;margin:0.5em 0}\n")
                 .append(".bad{background:#fde2e1;border:1px solid #d33;padding:0.6em 1em;margin:0.5em 0}\n")
                 .append(".charts img{margin:4px;border:1px solid #ddd}.small{color:#666;font-size:0.9em}\n")
-                .append("code{background:#f6f6f6;padding:0 3px}\n</style></head><body>\n");
+                .append("code{background:#f6f6f6;padding:0 3px}\n")
+                .append(".wide{overflow-x:auto}.wide td{white-space:nowrap}\n</style></head><body>\n");
         h.append("<h1>Benchmark suite: ").append(esc(p.dataset())).append("</h1>\n");
         h.append("<p class=\"small\">trajeval ").append(esc(r.version())).append(", report schema ")
                 .append(esc(r.schema())).append(" v").append(r.schemaVersion()).append(", manifest <code>")
@@ -55,6 +56,8 @@ public final class SuiteHtml {
         hygiene(h, r);
         summary(h, r);
         comparisons(h, r);
+        SuiteStatisticsHtml.rankings(h, r);
+        SuiteStatisticsHtml.variance(h, r);
         boxes(h, r);
         sequences(h, plots);
         failures(h, r);
@@ -89,8 +92,10 @@ public final class SuiteHtml {
         kv(h, "budget", b.device() + (b.cores() == null ? "" : ", " + b.cores() + " cores") + ", real-time factor "
                 + fmt(b.realTimeFactor()) + ", memory cap " + b.memoryCapMib() + " MiB");
         kv(h, "statistics", "confidence " + fmt(p.analysis().confidenceLevel()) + ", bootstrap B = "
-                + p.analysis().bootstrapResamples() + " (seed " + p.analysis().seed() + "), Wilcoxon exact up to n = "
-                + p.analysis().wilcoxonExactMaxN());
+                + p.analysis().bootstrapResamples() + " (seed " + p.analysis().seed() + "), Wilcoxon exact up to "
+                + p.analysis().wilcoxonExactMaxN() + " non-zero differences; pairwise p-values Holm-adjusted per metric; "
+                + "failure-rate intervals clustered by sequence (Korn-Graubard); planning at power "
+                + fmt(powerOf(r)));
         h.append("</tbody></table>\n");
     }
 
@@ -110,7 +115,8 @@ public final class SuiteHtml {
         double level = r.protocol().analysis().confidenceLevel();
         h.append("<h2>Methods</h2>\n<table><thead><tr><th class=\"l\">method</th><th>runs</th><th>failures</th>")
                 .append("<th>failure rate</th><th>Wilson ").append(pct(level)).append("</th><th>Clopper-Pearson ")
-                .append(pct(level)).append("</th><th>score S (mean &plusmn; sd)</th>");
+                .append(pct(level)).append("</th><th>clustered by sequence ").append(pct(level))
+                .append("<br><span class=\"small\">Korn-Graubard</span></th><th>score S (mean &plusmn; sd)</th>");
         for (String k : keys) {
             h.append("<th>").append(esc(k)).append("<br><span class=\"small\">mean of sequence means</span></th>");
         }
@@ -119,11 +125,15 @@ public final class SuiteHtml {
             h.append("<tr><td class=\"l\"><b>").append(esc(m.name())).append("</b></td><td>").append(m.runs())
                     .append("</td><td>").append(m.failures()).append("</td>");
             if (m.failureRate() == null) {
-                h.append("<td></td><td></td><td></td>");
+                h.append("<td></td><td></td><td></td><td></td>");
             } else {
+                SuiteReport.ClusteredBounds cl = m.failureRate().clustered();
                 h.append("<td>").append(fmt(m.failureRate().estimate())).append("</td><td>")
                         .append(bounds(m.failureRate().wilson())).append("</td><td>")
-                        .append(bounds(m.failureRate().clopperPearson())).append("</td>");
+                        .append(bounds(m.failureRate().clopperPearson())).append("</td><td>")
+                        .append(cl == null ? "&mdash;" : bounds(new Bounds(cl.lower(), cl.upper()))
+                                + " <span class=\"small\">(design effect " + fmt(cl.designEffect()) + ")</span>")
+                        .append("</td>");
             }
             h.append("<td>").append(fmt(m.score().mean())).append(" &plusmn; ").append(fmt(m.score().sd()))
                     .append("</td>");
@@ -139,24 +149,54 @@ public final class SuiteHtml {
     private static void comparisons(StringBuilder h, SuiteReport r) {
         double level = r.protocol().analysis().confidenceLevel();
         h.append("<h2>Paired comparisons</h2>\n<p class=\"small\">d<sub>s</sub> = A<sub>s</sub> - B<sub>s</sub> per ")
-                .append("sequence (mean over the common seeds); for error metrics lower is better (d &lt; 0 favours")
-                .append(" A), for the score higher is better. t-interval: d&#772; &plusmn; t<sub>n-1,1-&alpha;/2</sub>")
-                .append(" s<sub>d</sub>/&radic;n; bootstrap: percentile, resampling whole sequences.</p>\n")
-                .append("<table><thead><tr><th class=\"l\">A</th><th class=\"l\">B</th><th class=\"l\">metric</th>")
-                .append("<th>n</th><th>mean d</th><th>t-interval ").append(pct(level)).append("</th><th>bootstrap ")
-                .append(pct(level)).append("</th><th>Wilcoxon p</th><th class=\"l\">which test applies</th>")
-                .append("</tr></thead><tbody>\n");
+                .append("sequence (each method's mean over its own successful seeds among the common ones); for error")
+                .append(" metrics lower is better (d &lt; 0 favours A), for the score higher is better. n: paired ")
+                .append("sequences; non-zero: differences the Wilcoxon test ranks. t-interval: d&#772; &plusmn; ")
+                .append("t<sub>n-1,1-&alpha;/2</sub> s<sub>d</sub>/&radic;n; bootstrap: percentile, resampling whole ")
+                .append("sequences; Hodges-Lehmann: median of the Walsh averages with its exact or asymptotic ")
+                .append("interval; Holm: p adjusted over the metric's pairwise tests; detectable: the smallest mean ")
+                .append("difference this n detects with ").append(pct(powerOf(r))).append(" power.</p>\n")
+                .append("<div class=\"wide\"><table><thead><tr><th class=\"l\">A</th><th class=\"l\">B</th>")
+                .append("<th class=\"l\">metric</th><th>n</th><th>non-zero</th><th>mean d</th><th>t-interval ").append(pct(level))
+                .append("</th><th>bootstrap ").append(pct(level)).append("</th><th>Hodges-Lehmann ").append(pct(level))
+                .append("</th><th>A better</th><th>Wilcoxon p</th><th>Holm p</th><th>detectable</th>")
+                .append("<th class=\"l\">test (hover: why)</th></tr></thead><tbody>\n");
         for (Comparison c : r.comparisons()) {
+            SuiteReport.HodgesLehmannEntry hl = c.hodgesLehmann();
             h.append("<tr><td class=\"l\">").append(esc(c.methodA())).append("</td><td class=\"l\">")
                     .append(esc(c.methodB())).append("</td><td class=\"l\">").append(esc(c.metric()))
-                    .append("</td><td>").append(c.n()).append("</td><td>").append(fmt(c.meanDifference()))
+                    .append("</td><td>").append(c.n()).append("</td><td>").append(c.nonzeroDifferences())
+                    .append("</td><td>").append(fmt(c.meanDifference()))
                     .append("</td><td>").append(bounds(c.tInterval())).append("</td><td>")
                     .append(bounds(c.bootstrap())).append("</td><td>")
-                    .append(c.wilcoxon() == null ? "" : fmt(c.wilcoxon().pValue()) + " <span class=\"small\">("
+                    .append(hl == null ? "&mdash;" : fmt(hl.estimate()) + " " + bounds(new Bounds(hl.lower(), hl.upper()))
+                            + " <span class=\"small\">(" + esc(hl.method()) + ")</span>")
+                    .append("</td><td>")
+                    .append(c.wins() == null ? "&mdash;" : c.wins().aBetter() + "/" + c.n() + " ("
+                            + fmt(100.0 * c.wins().shareABetter()) + "&nbsp;%)")
+                    .append("</td><td>")
+                    .append(c.wilcoxon() == null ? "&mdash;" : fmt(c.wilcoxon().pValue()) + " <span class=\"small\">("
                             + esc(c.wilcoxon().method().replace('_', ' ')) + ")</span>")
-                    .append("</td><td class=\"l small\">").append(esc(c.primary())).append("</td></tr>\n");
+                    .append("</td><td>").append(c.holm() == null ? "&mdash;" : fmt(c.holm().pAdjusted()))
+                    .append("</td><td>").append(c.planning() == null ? "&mdash;"
+                            : fmt(c.planning().minDetectableDifference()))
+                    .append("</td><td class=\"l\" title=\"").append(esc(c.primary())).append("\">")
+                    .append(esc(c.testLabel())).append("</td></tr>\n");
         }
-        h.append("</tbody></table>\n");
+        h.append("</tbody></table></div>\n<ul class=\"small\">\n");
+        java.util.Map<String, List<String>> why = new java.util.LinkedHashMap<>();
+        for (Comparison c : r.comparisons()) {
+            why.computeIfAbsent(c.primary(), k -> new ArrayList<>()).add(c.methodA() + "-" + c.methodB() + " "
+                    + c.metric());
+        }
+        why.forEach((reason, rows) -> h.append("<li>").append(esc(reason)).append(": ")
+                .append(esc(String.join(", ", rows))).append("</li>\n"));
+        h.append("</ul>\n");
+    }
+
+    private static double powerOf(SuiteReport r) {
+        Double p = r.protocol().analysis().power();
+        return p == null ? org.trajeval.core.stats.PowerPlanning.DEFAULT_POWER : p;
     }
 
     private static void boxes(StringBuilder h, SuiteReport r) {
@@ -219,11 +259,11 @@ public final class SuiteHtml {
                 .append("</td></tr>\n");
     }
 
-    private static String bounds(Bounds b) {
+    static String bounds(Bounds b) {
         return b == null ? "&mdash;" : "[" + fmt(b.lower()) + ", " + fmt(b.upper()) + "]";
     }
 
-    private static String pct(double level) {
+    static String pct(double level) {
         return fmt(100.0 * level) + "&nbsp;%";
     }
 

@@ -1,8 +1,10 @@
 package org.trajeval.core.protocol;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import org.trajeval.core.report.SuiteReport;
 import org.trajeval.core.report.SuiteReport.Bounds;
 import org.trajeval.core.report.SuiteReport.Comparison;
@@ -13,9 +15,13 @@ import org.trajeval.core.report.SuiteReport.RunEntry;
 import org.trajeval.core.report.SuiteReport.SequenceSummary;
 import org.trajeval.core.stats.BinomialInterval;
 import org.trajeval.core.stats.BootstrapInterval;
+import org.trajeval.core.stats.ClusteredProportion;
+import org.trajeval.core.stats.HodgesLehmann;
 import org.trajeval.core.stats.Interval;
 import org.trajeval.core.stats.PairedTInterval;
+import org.trajeval.core.stats.PowerPlanning;
 import org.trajeval.core.stats.SampleSummary;
+import org.trajeval.core.stats.VarianceComponents;
 import org.trajeval.core.stats.WilcoxonSignedRank;
 
 /**
@@ -36,9 +42,11 @@ public final class SuiteAnalysis {
      * @param seed seed of the bootstrap resampling
      * @param level confidence level of every interval
      * @param resamples bootstrap resamples B
+     * @param power power 1 - beta of the planning figures, in (0.5, 1)
+     * @param targets per metric key, a mean difference whose needed number of sequences is reported
      */
-    public record Settings(long seed, double level, int resamples) {
-        /** @throws IllegalArgumentException on a level outside (0, 1) or fewer than 100 resamples */
+    public record Settings(long seed, double level, int resamples, double power, Map<String, Double> targets) {
+        /** @throws IllegalArgumentException on a level outside (0, 1), fewer than 100 resamples, a bad power or target */
         public Settings {
             if (!(level > 0.0 && level < 1.0)) {
                 throw new IllegalArgumentException("confidence level must be in (0, 1), got " + level);
@@ -46,6 +54,21 @@ public final class SuiteAnalysis {
             if (resamples < 100) {
                 throw new IllegalArgumentException("bootstrap needs at least 100 resamples, got " + resamples);
             }
+            if (!(power > 0.5 && power < 1.0)) {
+                throw new IllegalArgumentException("power must be in (0.5, 1), got " + power);
+            }
+            targets = Map.copyOf(targets);
+            targets.forEach((k, v) -> {
+                if (!(Double.isFinite(v) && v != 0.0)) {
+                    throw new IllegalArgumentException("difference to detect for '" + k
+                            + "' must be a finite non-zero number, got " + v);
+                }
+            });
+        }
+
+        /** Power {@link PowerPlanning#DEFAULT_POWER}, no target difference. */
+        public Settings(long seed, double level, int resamples) {
+            this(seed, level, resamples, PowerPlanning.DEFAULT_POWER, Map.of());
         }
 
         /** 95 %, 4000 resamples. */
@@ -81,29 +104,67 @@ public final class SuiteAnalysis {
             Interval w = BinomialInterval.WILSON.of(failures, runs.size(), level);
             Interval cp = BinomialInterval.CLOPPER_PEARSON.of(failures, runs.size(), level);
             rate = new SuiteReport.Proportion(w.estimate(), level, new Bounds(w.lower(), w.upper()),
-                    new Bounds(cp.lower(), cp.upper()));
+                    new Bounds(cp.lower(), cp.upper()), clustered(sequences, runs, level));
         }
         List<SequenceSummary> scorePerSeq = new ArrayList<>();
-        for (String s : sequences) {
-            scorePerSeq.add(sequenceSummary(s, values(runs, s, SCORE)));
+        double[][] scoreGroups = new double[sequences.size()][];
+        for (int i = 0; i < sequences.size(); i++) {
+            scoreGroups[i] = values(runs, sequences.get(i), SCORE);
+            scorePerSeq.add(sequenceSummary(sequences.get(i), scoreGroups[i]));
         }
         List<MetricSummary> metrics = new ArrayList<>();
         for (String key : metricKeys) {
             List<SequenceSummary> per = new ArrayList<>();
             List<Double> means = new ArrayList<>();
-            for (String s : sequences) {
-                SequenceSummary ss = sequenceSummary(s, values(runs, s, key));
+            double[][] groups = new double[sequences.size()][];
+            for (int i = 0; i < sequences.size(); i++) {
+                groups[i] = values(runs, sequences.get(i), key);
+                SequenceSummary ss = sequenceSummary(sequences.get(i), groups[i]);
                 per.add(ss);
                 if (ss.mean() != null) {
                     means.add(ss.mean());
                 }
             }
             double[] m = means.stream().mapToDouble(Double::doubleValue).toArray();
-            metrics.add(new MetricSummary(key, nullable(SampleSummary.of(m).mean()), per));
+            metrics.add(new MetricSummary(key, nullable(SampleSummary.of(m).mean()), per, variance(groups)));
         }
         SampleSummary sc = SampleSummary.of(scores);
         return new MethodSummary(method, runs.size(), failures, rate,
-                new SuiteReport.Summary(sc.n(), nullable(sc.mean()), nullable(sc.sd())), scorePerSeq, metrics);
+                new SuiteReport.Summary(sc.n(), nullable(sc.mean()), nullable(sc.sd())), scorePerSeq, metrics,
+                variance(scoreGroups));
+    }
+
+    /** Korn-Graubard interval of the failure rate with the runs clustered by sequence. */
+    private static SuiteReport.ClusteredBounds clustered(List<String> sequences, List<RunEntry> runs, double level) {
+        int[] f = new int[sequences.size()];
+        int[] n = new int[sequences.size()];
+        for (RunEntry r : runs) {
+            int i = sequences.indexOf(r.sequence());
+            if (i >= 0) {
+                n[i]++;
+                if (!r.ok()) {
+                    f[i]++;
+                }
+            }
+        }
+        if (Arrays.stream(n).sum() == 0) {
+            return null;
+        }
+        ClusteredProportion.Result c = ClusteredProportion.of(f, n, level);
+        return new SuiteReport.ClusteredBounds(ClusteredProportion.METHOD, c.sequences(),
+                nullable(c.designEffect()), nullable(c.effectiveTrials()), c.interval().lower(),
+                c.interval().upper());
+    }
+
+    /** @return the variance split of per-sequence groups of values, null when not estimable */
+    static SuiteReport.VarianceSplit variance(double[][] groups) {
+        VarianceComponents.Result v = VarianceComponents.of(groups);
+        if (v == null) {
+            return null;
+        }
+        return new SuiteReport.VarianceSplit(v.sequences(), v.values(), v.seedsPerSequence(),
+                Math.sqrt(v.sequenceVariance()), Math.sqrt(v.seedVariance()), nullable(v.sequenceShare()),
+                v.advice().name().toLowerCase(Locale.ROOT));
     }
 
     /**
@@ -133,44 +194,95 @@ public final class SuiteAnalysis {
         int n = pairs.size();
         double[] d = pairs.stream().mapToDouble(Paired::difference).toArray();
         Double mean = n == 0 ? null : SampleSummary.of(d).mean();
+        boolean higher = SCORE.equals(key);
         Bounds t = null;
         Bounds boot = null;
         SuiteReport.Wilcoxon wil = null;
+        SuiteReport.HodgesLehmannEntry hl = null;
+        SuiteReport.Wins wins = null;
+        SuiteReport.Planning planning = null;
+        WilcoxonSignedRank.Result w = null;
         if (n >= 2) {
             Interval ti = PairedTInterval.of(d, settings.level());
             t = new Bounds(ti.lower(), ti.upper());
             Interval bi = BootstrapInterval.ofMean(d, settings.level(), settings.resamples(),
                     settings.seed() * 1_000_003L + stream);
             boot = new Bounds(bi.lower(), bi.upper());
+            double sd = SampleSummary.of(d).sd();
+            Double target = settings.targets().get(key);
+            Integer needed = null;
+            if (target != null) {
+                int k = PowerPlanning.sequencesNeeded(sd, target, settings.level(), settings.power());
+                needed = k < 0 ? null : k;
+            }
+            planning = new SuiteReport.Planning(sd, settings.power(),
+                    PowerPlanning.minimumDetectableDifference(sd, n, settings.level(), settings.power()), target,
+                    needed);
         }
         if (n >= 1) {
-            WilcoxonSignedRank.Result w = WilcoxonSignedRank.test(d);
+            w = WilcoxonSignedRank.test(d);
             wil = new SuiteReport.Wilcoxon(w.n(), w.zeros(), w.wPlus(), w.wMinus(), w.pValue(),
                     w.method().name().toLowerCase(Locale.ROOT));
+            HodgesLehmann.Result h = HodgesLehmann.of(d, settings.level());
+            hl = new SuiteReport.HodgesLehmannEntry(h.estimate(), h.interval().lower(), h.interval().upper(),
+                    settings.level(), h.achievedLevel(), h.method().name().toLowerCase(Locale.ROOT));
+            int aBetter = 0;
+            int ties = 0;
+            for (double v : d) {
+                if (v == 0.0) {
+                    ties++;
+                } else if ((v < 0.0) != higher) {
+                    aBetter++;
+                }
+            }
+            wins = new SuiteReport.Wins(aBetter, ties, n - aBetter - ties, aBetter / (double) n);
         }
-        return new Comparison(methodA, methodB, key, SCORE.equals(key) ? "higher" : "lower", n, mean, t, boot, wil,
-                primary(n), pairs);
+        int nonzero = w == null ? 0 : w.n();
+        Choice choice = choose(n, w);
+        return new Comparison(methodA, methodB, key, higher ? "higher" : "lower", n, nonzero, mean, t, boot, wil,
+                null, hl, wins, planning, choice.test(), choice.why(), pairs);
     }
 
-    /** @return which test applies at n paired sequences, and why */
-    public static String primary(int n) {
+    /**
+     * Which test the conclusion rests on, and why.
+     *
+     * @param test machine-readable name
+     * @param why one sentence for a person
+     */
+    public record Choice(String test, String why) {
+    }
+
+    /**
+     * The test that applies at n paired sequences with the Wilcoxon result {@code w} (its n counts the
+     * non-zero differences, its method says exact or normal approximation).
+     *
+     * @param n paired sequences
+     * @param w Wilcoxon result, null when n = 0
+     */
+    public static Choice choose(int n, WilcoxonSignedRank.Result w) {
         if (n == 0) {
-            return "none: no sequence where both methods have a value";
+            return new Choice("none", "none: no sequence where both methods have a value");
         }
         if (n == 1) {
-            return "none: one paired sequence gives no interval and no test";
+            return new Choice("none", "none: one paired sequence gives no interval and no test");
         }
-        if (n < 6) {
-            return String.format(Locale.ROOT, "bootstrap interval, descriptive only: with n = %d the smallest "
-                    + "attainable Wilcoxon p is 2/2^%d = %.4f, so no difference can reach p < 0.05; the t-interval "
-                    + "assumes normal differences", n, n, 2.0 / Math.pow(2, n));
+        int m = w.n();
+        String variant = w.method() == WilcoxonSignedRank.Method.NORMAL_APPROXIMATION
+                ? "normal approximation" : "exact";
+        String wilcoxon = "Wilcoxon signed-rank (" + variant + ", on " + m + " non-zero of " + n + " differences)";
+        if (n >= 30) {
+            return new Choice("t_interval", "t-interval (n = " + n + " >= 30: the mean difference is close to "
+                    + "normal), cross-checked by " + (m == 0 ? "nothing: every difference is zero" : wilcoxon));
         }
-        if (n < 30) {
-            return "Wilcoxon signed-rank (exact) with the bootstrap interval; the t-interval assumes normal "
-                    + "differences, questionable at n = " + n;
+        if (m < 6) {
+            return new Choice("bootstrap_descriptive", String.format(Locale.ROOT, "bootstrap interval, descriptive "
+                    + "only: with %d non-zero of %d differences the smallest attainable Wilcoxon p is %s, so no "
+                    + "difference can reach p < 0.05; the t-interval assumes normal differences", m, n,
+                    m == 0 ? "1" : String.format(Locale.ROOT, "2/2^%d = %.4f", m, 2.0 / Math.pow(2, m))));
         }
-        return "t-interval (n = " + n + " >= 30: the mean difference is close to normal), cross-checked by "
-                + "Wilcoxon (" + (n <= WilcoxonSignedRank.EXACT_MAX_N ? "exact" : "normal approximation") + ")";
+        return new Choice(w.method() == WilcoxonSignedRank.Method.NORMAL_APPROXIMATION
+                ? "wilcoxon_normal_approximation" : "wilcoxon_exact", wilcoxon + " with the bootstrap interval; "
+                + "the t-interval assumes normal differences, questionable at n = " + n);
     }
 
     /** @return the values of one metric of the runs on one sequence: ok runs only, or every run for the score */

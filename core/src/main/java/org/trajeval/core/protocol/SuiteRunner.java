@@ -36,6 +36,7 @@ import org.trajeval.core.report.EvaluationReport;
 import org.trajeval.core.report.SequencePlot;
 import org.trajeval.core.report.SuiteReport;
 import org.trajeval.core.report.SuiteReport.RunEntry;
+import org.trajeval.core.stats.ClusteredProportion;
 import org.trajeval.core.stats.WilcoxonSignedRank;
 import org.trajeval.core.traj.Trajectory;
 
@@ -73,8 +74,21 @@ public final class SuiteRunner {
      * @param allowLeakage run despite split leakage (flagged in the report)
      * @param level confidence level of every interval
      * @param resamples bootstrap resamples
+     * @param power power of the planning figures
+     * @param targets per metric key, a mean difference whose needed number of sequences is reported
      */
-    public record Settings(long seed, boolean allowLeakage, double level, int resamples) {
+    public record Settings(long seed, boolean allowLeakage, double level, int resamples, double power,
+            Map<String, Double> targets) {
+        /** Copies the targets. */
+        public Settings {
+            targets = Map.copyOf(targets);
+        }
+
+        /** Planning at {@link org.trajeval.core.stats.PowerPlanning#DEFAULT_POWER}, no target difference. */
+        public Settings(long seed, boolean allowLeakage, double level, int resamples) {
+            this(seed, allowLeakage, level, resamples, org.trajeval.core.stats.PowerPlanning.DEFAULT_POWER, Map.of());
+        }
+
         /** @return seed {@code seed}, leakage refused, 95 %, 4000 resamples */
         public static Settings defaults(long seed) {
             return new Settings(seed, false, 0.95, org.trajeval.core.stats.BootstrapInterval.DEFAULT_RESAMPLES);
@@ -82,7 +96,7 @@ public final class SuiteRunner {
 
         /** @return a copy allowing leakage or not */
         public Settings withAllowLeakage(boolean allow) {
-            return new Settings(seed, allow, level, resamples);
+            return new Settings(seed, allow, level, resamples, power, targets);
         }
     }
 
@@ -209,10 +223,16 @@ public final class SuiteRunner {
                     settings.level()));
         }
         SuiteAnalysis.Settings stats = new SuiteAnalysis.Settings(settings.seed(), settings.level(),
-                settings.resamples());
+                settings.resamples(), settings.power(), settings.targets());
         List<SuiteReport.Comparison> comparisons = new ArrayList<>();
         List<String> compared = new ArrayList<>(keys);
         compared.add(SuiteAnalysis.SCORE);
+        for (String k : settings.targets().keySet()) {
+            if (!compared.contains(k)) {
+                throw new IllegalArgumentException("--detect: the suite compares no metric '" + k
+                        + "'; expected one of " + compared);
+            }
+        }
         int stream = 0;
         for (int a = 0; a < m.methods().size(); a++) {
             for (int b = a + 1; b < m.methods().size(); b++) {
@@ -224,6 +244,11 @@ public final class SuiteRunner {
                 }
             }
         }
+        List<String> methodNames = m.methods().stream().map(MethodSpec::name).toList();
+        Map<String, List<RunEntry>> runsByMethod = new LinkedHashMap<>();
+        methodNames.forEach(name -> runsByMethod.put(name, runsOf(runs, name)));
+        MethodRanking.Result ranking = MethodRanking.of(methodNames, runsByMethod, seqIds, compared, comparisons,
+                settings.level());
 
         List<String> warnings = new ArrayList<>();
         for (SplitLeakage l : leaks) {
@@ -238,7 +263,7 @@ public final class SuiteRunner {
                         : DataKind.SPATIAL), new SuiteReport.Hygiene(leaks.stream().map(l ->
                         new SuiteReport.Leak(l.unit().name().toLowerCase(Locale.ROOT), l.id(), leakMembers(l)))
                         .toList(), !leaks.isEmpty(), warnings),
-                inputs, summaries, comparisons, runs);
+                inputs, summaries, ranking.comparisons(), ranking.rankings(), runs);
 
         List<SequencePlot> plots = new ArrayList<>();
         for (SequenceSpec s : evaluated) {
@@ -458,7 +483,8 @@ public final class SuiteRunner {
                 m.score().terms().stream().map(t -> new SuiteReport.ScoreTerm(t.metric().key(), t.cap(), t.weight()))
                         .toList(),
                 new SuiteReport.Analysis(settings.seed(), settings.level(), settings.resamples(),
-                        WilcoxonSignedRank.EXACT_MAX_N));
+                        WilcoxonSignedRank.EXACT_MAX_N, settings.power(), new java.util.TreeMap<>(settings.targets()),
+                        "holm", ClusteredProportion.METHOD));
     }
 
     private static String lower(Enum<?> e) {

@@ -22,10 +22,12 @@ import java.util.Map;
  * @param inputs SHA-256 of every input file, sorted by path
  * @param methods one summary per method, in manifest order
  * @param comparisons paired comparisons of every pair of methods and every compared metric
+ * @param rankings with three or more methods, per compared metric: Friedman test, average ranks and the
+ *     rank diagram's groups (empty with fewer methods)
  * @param runs every (method, sequence, seed) run, sorted by method (manifest order), sequence, seed
  */
 @JsonPropertyOrder({"schema", "schema_version", "version", "protocol", "hygiene", "inputs", "methods", "comparisons",
-    "runs"})
+    "rankings", "runs"})
 @JsonInclude(JsonInclude.Include.ALWAYS)
 public record SuiteReport(
         @JsonProperty("schema") String schema,
@@ -36,6 +38,7 @@ public record SuiteReport(
         @JsonProperty("inputs") List<InputDigest> inputs,
         @JsonProperty("methods") List<MethodSummary> methods,
         @JsonProperty("comparisons") List<Comparison> comparisons,
+        @JsonProperty("rankings") List<Ranking> rankings,
         @JsonProperty("runs") List<RunEntry> runs) {
 
     /** Name of the report schema. */
@@ -164,12 +167,21 @@ public record SuiteReport(
      * @param seed seed of the bootstrap
      * @param confidenceLevel level of every interval
      * @param bootstrapResamples bootstrap resamples B
-     * @param wilcoxonExactMaxN largest n for the exact Wilcoxon p-value
+     * @param wilcoxonExactMaxN largest number of non-zero differences for the exact Wilcoxon p-value
+     * @param power power 1 - beta of the planning figures
+     * @param targetDifferences per metric, the mean difference whose needed number of sequences is reported
+     * @param multipleComparisons adjustment of the pairwise p-values within each metric ("holm")
+     * @param failureRateClustering how the clustered failure-rate interval treats seeds of one sequence
      */
-    @JsonPropertyOrder({"seed", "confidence_level", "bootstrap_resamples", "wilcoxon_exact_max_n"})
+    @JsonPropertyOrder({"seed", "confidence_level", "bootstrap_resamples", "wilcoxon_exact_max_n", "power",
+        "target_differences", "multiple_comparisons", "failure_rate_clustering"})
     public record Analysis(@JsonProperty("seed") long seed, @JsonProperty("confidence_level") double confidenceLevel,
             @JsonProperty("bootstrap_resamples") int bootstrapResamples,
-            @JsonProperty("wilcoxon_exact_max_n") int wilcoxonExactMaxN) {
+            @JsonProperty("wilcoxon_exact_max_n") int wilcoxonExactMaxN,
+            @JsonProperty("power") Double power,
+            @JsonProperty("target_differences") Map<String, Double> targetDifferences,
+            @JsonProperty("multiple_comparisons") String multipleComparisons,
+            @JsonProperty("failure_rate_clustering") String failureRateClustering) {
     }
 
     /**
@@ -211,13 +223,36 @@ public record SuiteReport(
      * @param score normalised score S over all runs (a failed run scores 0)
      * @param scorePerSequence S per sequence over the seeds
      * @param metrics per score metric, statistics over successful runs
+     * @param scoreVariance the score's variance split between sequences and seeds, null when not estimable
      */
-    @JsonPropertyOrder({"name", "runs", "failures", "failure_rate", "score", "score_per_sequence", "metrics"})
+    @JsonPropertyOrder({"name", "runs", "failures", "failure_rate", "score", "score_per_sequence", "metrics",
+        "score_variance"})
     public record MethodSummary(@JsonProperty("name") String name, @JsonProperty("runs") int runs,
             @JsonProperty("failures") int failures, @JsonProperty("failure_rate") Proportion failureRate,
             @JsonProperty("score") Summary score,
             @JsonProperty("score_per_sequence") List<SequenceSummary> scorePerSequence,
-            @JsonProperty("metrics") List<MetricSummary> metrics) {
+            @JsonProperty("metrics") List<MetricSummary> metrics,
+            @JsonProperty("score_variance") VarianceSplit scoreVariance) {
+    }
+
+    /**
+     * One-way random-effects split of a metric's variance over runs (ANOVA estimator), in the
+     * metric's unit.
+     *
+     * @param sequences sequences with a value
+     * @param values values in all
+     * @param seedsPerSequence n0, the effective number of seeds per sequence
+     * @param sequenceSd sigma_seq, between-sequence standard deviation
+     * @param seedSd sigma_seed, between-seed standard deviation within a sequence
+     * @param sequenceShare sigma_seq^2 / (sigma_seq^2 + sigma_seed^2), null when both are 0
+     * @param advice more_seeds or more_sequences
+     */
+    @JsonPropertyOrder({"sequences", "values", "seeds_per_sequence", "sequence_sd", "seed_sd", "sequence_share",
+        "advice"})
+    public record VarianceSplit(@JsonProperty("sequences") int sequences, @JsonProperty("values") int values,
+            @JsonProperty("seeds_per_sequence") double seedsPerSequence,
+            @JsonProperty("sequence_sd") double sequenceSd, @JsonProperty("seed_sd") double seedSd,
+            @JsonProperty("sequence_share") Double sequenceShare, @JsonProperty("advice") String advice) {
     }
 
     /**
@@ -225,10 +260,27 @@ public record SuiteReport(
      * @param level confidence level
      * @param wilson Wilson score interval
      * @param clopperPearson Clopper-Pearson interval
+     * @param clustered interval that treats the seeds of one sequence as a cluster (the one to quote)
      */
-    @JsonPropertyOrder({"estimate", "level", "wilson", "clopper_pearson"})
+    @JsonPropertyOrder({"estimate", "level", "wilson", "clopper_pearson", "clustered"})
     public record Proportion(@JsonProperty("estimate") double estimate, @JsonProperty("level") double level,
-            @JsonProperty("wilson") Bounds wilson, @JsonProperty("clopper_pearson") Bounds clopperPearson) {
+            @JsonProperty("wilson") Bounds wilson, @JsonProperty("clopper_pearson") Bounds clopperPearson,
+            @JsonProperty("clustered") ClusteredBounds clustered) {
+    }
+
+    /**
+     * @param method korn_graubard_sequence_clusters
+     * @param sequences sequences the runs cluster in
+     * @param designEffect runs per independent trial, N / n*, null with one sequence
+     * @param effectiveTrials n* after the degrees-of-freedom correction, null with one sequence
+     * @param lower lower bound
+     * @param upper upper bound
+     */
+    @JsonPropertyOrder({"method", "sequences", "design_effect", "effective_trials", "lower", "upper"})
+    public record ClusteredBounds(@JsonProperty("method") String method, @JsonProperty("sequences") int sequences,
+            @JsonProperty("design_effect") Double designEffect,
+            @JsonProperty("effective_trials") Double effectiveTrials, @JsonProperty("lower") double lower,
+            @JsonProperty("upper") double upper) {
     }
 
     /**
@@ -265,36 +317,164 @@ public record SuiteReport(
      * @param metric metric key (with unit)
      * @param meanOfSequenceMeans mean over sequences of the per-sequence means, null when none
      * @param perSequence per sequence, mean and sd over seeds
+     * @param variance the split of the metric's variance between sequences and seeds, null when not estimable
      */
-    @JsonPropertyOrder({"metric", "mean_of_sequence_means", "per_sequence"})
+    @JsonPropertyOrder({"metric", "mean_of_sequence_means", "per_sequence", "variance"})
     public record MetricSummary(@JsonProperty("metric") String metric,
             @JsonProperty("mean_of_sequence_means") Double meanOfSequenceMeans,
-            @JsonProperty("per_sequence") List<SequenceSummary> perSequence) {
+            @JsonProperty("per_sequence") List<SequenceSummary> perSequence,
+            @JsonProperty("variance") VarianceSplit variance) {
     }
 
     /**
      * Paired comparison of two methods on one metric over the sequences where both have a value
-     * (the per-sequence mean over the common seeds): d_s = a_s - b_s.
+     * (the per-sequence mean over the common seeds; each method's mean is over its own successful
+     * seeds): d_s = a_s - b_s.
      *
      * @param methodA first method
      * @param methodB second method
      * @param metric metric key, or "score"
      * @param better "lower" for error metrics, "higher" for the score
      * @param n number of paired sequences
+     * @param nonzeroDifferences paired sequences with d_s != 0 (the Wilcoxon test's n)
      * @param meanDifference mean of d_s, null when n = 0
      * @param tInterval t-interval of the mean difference, null when n &lt; 2
      * @param bootstrap seeded percentile bootstrap over sequences, null when n &lt; 2
      * @param wilcoxon Wilcoxon signed-rank test, null when n = 0
-     * @param primary which test applies at this n
+     * @param holm the Wilcoxon p-value adjusted by Holm's method within its family, null when n = 0
+     * @param hodgesLehmann Hodges-Lehmann estimate of d with its interval, null when n = 0
+     * @param wins on how many sequences A is better, equal, worse; null when n = 0
+     * @param planning minimum detectable difference and sequences needed, null when n &lt; 2
+     * @param test the test the conclusion rests on: none, bootstrap_descriptive, wilcoxon_exact,
+     *     wilcoxon_normal_approximation or t_interval
+     * @param primary which test applies at this n and number of non-zero differences, and why
      * @param perSequence the paired values
      */
-    @JsonPropertyOrder({"method_a", "method_b", "metric", "better", "n", "mean_difference", "t_interval", "bootstrap",
-        "wilcoxon", "primary", "per_sequence"})
+    @JsonPropertyOrder({"method_a", "method_b", "metric", "better", "n", "nonzero_differences", "mean_difference",
+        "t_interval", "bootstrap", "wilcoxon", "holm", "hodges_lehmann", "wins", "planning", "test", "primary",
+        "per_sequence"})
     public record Comparison(@JsonProperty("method_a") String methodA, @JsonProperty("method_b") String methodB,
             @JsonProperty("metric") String metric, @JsonProperty("better") String better, @JsonProperty("n") int n,
+            @JsonProperty("nonzero_differences") int nonzeroDifferences,
             @JsonProperty("mean_difference") Double meanDifference, @JsonProperty("t_interval") Bounds tInterval,
             @JsonProperty("bootstrap") Bounds bootstrap, @JsonProperty("wilcoxon") Wilcoxon wilcoxon,
-            @JsonProperty("primary") String primary, @JsonProperty("per_sequence") List<Paired> perSequence) {
+            @JsonProperty("holm") HolmAdjusted holm, @JsonProperty("hodges_lehmann") HodgesLehmannEntry hodgesLehmann,
+            @JsonProperty("wins") Wins wins, @JsonProperty("planning") Planning planning,
+            @JsonProperty("test") String test, @JsonProperty("primary") String primary,
+            @JsonProperty("per_sequence") List<Paired> perSequence) {
+
+        /** @return a short name of the test this row rests on, with the Wilcoxon variant, for tables */
+        @com.fasterxml.jackson.annotation.JsonIgnore
+        public String testLabel() {
+            String variant = wilcoxon == null ? "-" : wilcoxon.method().replace('_', ' ')
+                    .replace("no nonzero differences", "all d = 0");
+            return switch (test == null ? "" : test) {
+                case "wilcoxon_exact" -> "Wilcoxon exact";
+                case "wilcoxon_normal_approximation" -> "Wilcoxon normal approx.";
+                case "t_interval" -> "t-interval (Wilcoxon " + variant + ")";
+                case "bootstrap_descriptive" -> "bootstrap, descriptive (nz < 6)";
+                case "none" -> "none (n < 2)";
+                default -> "-";
+            };
+        }
+
+        /** @return this comparison with its Holm-adjusted p-value */
+        public Comparison withHolm(HolmAdjusted h) {
+            return new Comparison(methodA, methodB, metric, better, n, nonzeroDifferences, meanDifference, tInterval,
+                    bootstrap, wilcoxon, h, hodgesLehmann, wins, planning, test, primary, perSequence);
+        }
+    }
+
+    /**
+     * @param family the tests adjusted together (the pairwise Wilcoxon tests of one metric)
+     * @param m number of tests in the family
+     * @param pAdjusted Holm-adjusted p-value
+     */
+    @JsonPropertyOrder({"family", "m", "p_adjusted"})
+    public record HolmAdjusted(@JsonProperty("family") String family, @JsonProperty("m") int m,
+            @JsonProperty("p_adjusted") double pAdjusted) {
+    }
+
+    /**
+     * @param estimate median of the Walsh averages of d (metric's unit)
+     * @param lower lower bound
+     * @param upper upper bound
+     * @param level requested level
+     * @param achievedLevel level the discrete exact interval attains
+     * @param method exact or asymptotic
+     */
+    @JsonPropertyOrder({"estimate", "lower", "upper", "level", "achieved_level", "method"})
+    public record HodgesLehmannEntry(@JsonProperty("estimate") double estimate, @JsonProperty("lower") double lower,
+            @JsonProperty("upper") double upper, @JsonProperty("level") double level,
+            @JsonProperty("achieved_level") double achievedLevel, @JsonProperty("method") String method) {
+    }
+
+    /**
+     * @param aBetter sequences on which A is better
+     * @param ties sequences with d_s = 0
+     * @param bBetter sequences on which B is better
+     * @param shareABetter aBetter / n
+     */
+    @JsonPropertyOrder({"a_better", "ties", "b_better", "share_a_better"})
+    public record Wins(@JsonProperty("a_better") int aBetter, @JsonProperty("ties") int ties,
+            @JsonProperty("b_better") int bBetter, @JsonProperty("share_a_better") double shareABetter) {
+    }
+
+    /**
+     * @param sdDifference s_d, standard deviation of the paired differences (metric's unit)
+     * @param power power 1 - beta
+     * @param minDetectableDifference delta_min at this n, level and power (metric's unit)
+     * @param targetDifference the difference asked for (--detect), null when none
+     * @param sequencesNeeded sequences needed to detect it, null when none asked or more than 10^6
+     */
+    @JsonPropertyOrder({"sd_difference", "power", "min_detectable_difference", "target_difference",
+        "sequences_needed"})
+    public record Planning(@JsonProperty("sd_difference") double sdDifference, @JsonProperty("power") double power,
+            @JsonProperty("min_detectable_difference") double minDetectableDifference,
+            @JsonProperty("target_difference") Double targetDifference,
+            @JsonProperty("sequences_needed") Integer sequencesNeeded) {
+    }
+
+    /**
+     * Many methods at once on one metric: the Friedman test over the sequences where every method
+     * has a value, average ranks (1 = best) and the groups of the average-rank diagram.
+     *
+     * @param metric metric key, or "score"
+     * @param better lower or higher
+     * @param n sequences where every method has a value (the blocks)
+     * @param methods methods with their average ranks, in report order
+     * @param friedman Friedman chi-square test, null when n &lt; 2
+     * @param imanDavenport Iman-Davenport F test, null when n &lt; 2
+     * @param family the Holm family the groups come from
+     * @param alpha significance level of the groups, 1 - confidence
+     * @param groups methods (in rank order) no pair of which differs significantly after Holm
+     */
+    @JsonPropertyOrder({"metric", "better", "n", "methods", "friedman", "iman_davenport", "family", "alpha",
+        "groups"})
+    public record Ranking(@JsonProperty("metric") String metric, @JsonProperty("better") String better,
+            @JsonProperty("n") int n, @JsonProperty("methods") List<RankedMethod> methods,
+            @JsonProperty("friedman") RankTest friedman, @JsonProperty("iman_davenport") RankTest imanDavenport,
+            @JsonProperty("family") String family, @JsonProperty("alpha") double alpha,
+            @JsonProperty("groups") List<List<String>> groups) {
+    }
+
+    /**
+     * @param name method
+     * @param averageRank average rank over the blocks (1 = best), null when n = 0
+     */
+    @JsonPropertyOrder({"name", "average_rank"})
+    public record RankedMethod(@JsonProperty("name") String name, @JsonProperty("average_rank") Double averageRank) {
+    }
+
+    /**
+     * @param statistic chi2_F or F_F; null when infinite (every sequence ranks the methods alike)
+     * @param df degrees of freedom (numerator for F)
+     * @param dfDenominator denominator degrees of freedom of F, null for chi-square
+     * @param pValue upper-tail p-value
+     */
+    @JsonPropertyOrder({"statistic", "df", "df_denominator", "p_value"})
+    public record RankTest(@JsonProperty("statistic") Double statistic, @JsonProperty("df") int df,
+            @JsonProperty("df_denominator") Integer dfDenominator, @JsonProperty("p_value") double pValue) {
     }
 
     /**

@@ -102,7 +102,8 @@ public final class SuiteReportFiles {
         StringBuilder sb = new StringBuilder();
         List<String> header = new ArrayList<>(List.of("method", "runs", "failures", "failure_rate",
                 "failure_rate_wilson_lower", "failure_rate_wilson_upper", "failure_rate_cp_lower",
-                "failure_rate_cp_upper", "score_mean", "score_sd"));
+                "failure_rate_cp_upper", "failure_rate_clustered_lower", "failure_rate_clustered_upper",
+                "failure_rate_clustered_method", "failure_rate_design_effect", "score_mean", "score_sd"));
         for (String k : keys) {
             header.add(k + "_mean_of_sequence_means");
         }
@@ -111,11 +112,14 @@ public final class SuiteReportFiles {
             List<String> f = new ArrayList<>(List.of(m.name(), Integer.toString(m.runs()),
                     Integer.toString(m.failures())));
             if (m.failureRate() == null) {
-                f.addAll(List.of("", "", "", "", ""));
+                f.addAll(List.of("", "", "", "", "", "", "", "", ""));
             } else {
                 f.add(num(m.failureRate().estimate()));
                 f.addAll(bounds(m.failureRate().wilson()));
                 f.addAll(bounds(m.failureRate().clopperPearson()));
+                SuiteReport.ClusteredBounds c = m.failureRate().clustered();
+                f.addAll(c == null ? List.of("", "", "", "") : List.of(num(c.lower()), num(c.upper()), c.method(),
+                        num(c.designEffect())));
             }
             f.add(num(m.score().mean()));
             f.add(num(m.score().sd()));
@@ -136,15 +140,31 @@ public final class SuiteReportFiles {
     /** @return the comparison table of these comparisons */
     public static String comparisonsCsv(List<Comparison> comparisons) {
         StringBuilder sb = new StringBuilder();
-        row(sb, List.of("method_a", "method_b", "metric", "better", "n", "mean_difference", "t_lower", "t_upper",
-                "bootstrap_lower", "bootstrap_upper", "wilcoxon_p", "wilcoxon_method"));
+        row(sb, List.of("method_a", "method_b", "metric", "better", "n", "nonzero_differences", "mean_difference",
+                "t_lower", "t_upper", "bootstrap_lower", "bootstrap_upper", "wilcoxon_p", "wilcoxon_method",
+                "holm_p", "holm_m", "hodges_lehmann", "hodges_lehmann_lower", "hodges_lehmann_upper",
+                "hodges_lehmann_method", "a_better", "ties", "b_better", "share_a_better", "sd_difference",
+                "min_detectable_difference", "power", "target_difference", "sequences_needed", "test"));
         for (Comparison c : comparisons) {
             List<String> f = new ArrayList<>(List.of(c.methodA(), c.methodB(), c.metric(), c.better(),
-                    Integer.toString(c.n()), num(c.meanDifference())));
+                    Integer.toString(c.n()), Integer.toString(c.nonzeroDifferences()), num(c.meanDifference())));
             f.addAll(bounds(c.tInterval()));
             f.addAll(bounds(c.bootstrap()));
             f.add(c.wilcoxon() == null ? "" : num(c.wilcoxon().pValue()));
             f.add(c.wilcoxon() == null ? "" : c.wilcoxon().method());
+            f.add(c.holm() == null ? "" : num(c.holm().pAdjusted()));
+            f.add(c.holm() == null ? "" : Integer.toString(c.holm().m()));
+            SuiteReport.HodgesLehmannEntry h = c.hodgesLehmann();
+            f.addAll(h == null ? List.of("", "", "", "") : List.of(num(h.estimate()), num(h.lower()), num(h.upper()),
+                    h.method()));
+            SuiteReport.Wins w = c.wins();
+            f.addAll(w == null ? List.of("", "", "", "") : List.of(Integer.toString(w.aBetter()),
+                    Integer.toString(w.ties()), Integer.toString(w.bBetter()), num(w.shareABetter())));
+            SuiteReport.Planning pl = c.planning();
+            f.addAll(pl == null ? List.of("", "", "", "", "") : List.of(num(pl.sdDifference()),
+                    num(pl.minDetectableDifference()), num(pl.power()), num(pl.targetDifference()),
+                    pl.sequencesNeeded() == null ? "" : Integer.toString(pl.sequencesNeeded())));
+            f.add(c.test());
             row(sb, f);
         }
         return sb.toString();

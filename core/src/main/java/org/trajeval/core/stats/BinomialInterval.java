@@ -12,7 +12,8 @@ public enum BinomialInterval {
     WILSON,
     /**
      * Clopper-Pearson ("exact") interval: lower = Beta^-1(alpha/2; f, n-f+1) (0 when f = 0),
-     * upper = Beta^-1(1-alpha/2; f+1, n-f) (1 when f = n). Conservative: coverage at least 1-alpha.
+     * upper = Beta^-1(1-alpha/2; f+1, n-f) (1 when f = n), solved on the upper tail;
+     * closed forms at f = 0 (upper 1 - (alpha/2)^(1/n)) and f = n (lower (alpha/2)^(1/n)). Conservative: coverage at least 1-alpha.
      */
     CLOPPER_PEARSON;
 
@@ -32,7 +33,7 @@ public enum BinomialInterval {
         double p = (double) successes / trials;
         return switch (this) {
             case WILSON -> {
-                double z = Quantiles.normal(1.0 - alpha / 2.0);
+                double z = Quantiles.normalUpper(alpha / 2.0);
                 double z2 = z * z;
                 double denom = 1.0 + z2 / trials;
                 double centre = (p + z2 / (2.0 * trials)) / denom;
@@ -43,7 +44,7 @@ public enum BinomialInterval {
                 double lo = successes == 0 ? 0.0
                         : Quantiles.beta(alpha / 2.0, successes, trials - successes + 1.0);
                 double hi = successes == trials ? 1.0
-                        : Quantiles.beta(1.0 - alpha / 2.0, successes + 1.0, (double) trials - successes);
+                        : Quantiles.betaUpper(alpha / 2.0, successes + 1.0, (double) trials - successes);
                 yield new Interval(p, lo, hi, level);
             }
         };

@@ -20,7 +20,7 @@ public final class PairedTInterval {
             throw new IllegalArgumentException("a t-interval needs at least 2 paired differences, got " + n);
         }
         SampleSummary s = SampleSummary.of(differences);
-        double t = Quantiles.student(1.0 - (1.0 - level) / 2.0, n - 1);
+        double t = Quantiles.studentUpper((1.0 - level) / 2.0, n - 1);
         double half = t * s.sd() / Math.sqrt(n);
         return new Interval(s.mean(), s.mean() - half, s.mean() + half, level);
     }

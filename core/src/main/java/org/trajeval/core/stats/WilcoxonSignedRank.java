@@ -16,7 +16,8 @@ import java.util.Arrays;
  *       p = min(1, 2 min(P(W+ &lt;= w), P(W+ &gt;= w))).</li>
  *   <li>n &gt; {@link #EXACT_MAX_N}: normal approximation with tie correction and continuity
  *       correction: E = n(n+1)/4, Var = n(n+1)(2n+1)/24 - sum_ties (t^3 - t)/48,
- *       z = (|W+ - E| - 1/2) / sqrt(Var), p = 2 (1 - Phi(z)).</li>
+ *       z = (|W+ - E| - 1/2) / sqrt(Var), p = 2 Q(z) with the upper tail Q(z) = erfc(z/sqrt 2)/2
+ *       (never 1 - Phi(z), which cancels in the tail).</li>
  * </ul>
  * Worked example: d = (1, -2, 3, 4, 5) gives ranks 1..5, W+ = 13, W- = 2; of the 32 sign
  * assignments 3 have W- &lt;= 2, so p = 2 * 3/32 = 0.1875.
@@ -157,7 +158,7 @@ public final class WilcoxonSignedRank {
             p = 1.0;
         } else {
             double z = Math.max(0.0, Math.abs(wPlus - mean) - 0.5) / Math.sqrt(var);
-            p = Math.min(1.0, 2.0 * (1.0 - Quantiles.normalCdf(z)));
+            p = Math.min(1.0, 2.0 * Quantiles.normalUpperTail(z));
         }
         return new Result(r.n, r.zeros, wPlus, n * (n + 1) / 2.0 - wPlus, p, Method.NORMAL_APPROXIMATION);
     }

@@ -107,4 +107,18 @@ class WilcoxonSignedRankTest {
         assertEquals(1.0, r.pValue(), 0.0);
         assertEquals(WilcoxonSignedRank.Method.NO_NONZERO_DIFFERENCES, r.method());
     }
+
+    @Test
+    void normalApproximationKeepsTheTailDigits() {
+        // 51 positive distinct differences: W+ = 1326, E = 663, Var = 51*52*103/24 = 11381.5,
+        // z = 662.5 / sqrt(11381.5) = 6.20992179995745; p = erfc(z / sqrt 2) by mpmath at 50 digits:
+        // 5.3010974667060379946e-10 (the old 2(1 - Phi(z)) gave 5.301097339e-10)
+        double[] d = new double[51];
+        for (int i = 0; i < d.length; i++) {
+            d[i] = i + 1.0;
+        }
+        WilcoxonSignedRank.Result r = WilcoxonSignedRank.test(d);
+        assertEquals(WilcoxonSignedRank.Method.NORMAL_APPROXIMATION, r.method());
+        assertEquals(5.3010974667060379946e-10, r.pValue(), 1e-12 * 5.3010974667060379946e-10);
+    }
 }
