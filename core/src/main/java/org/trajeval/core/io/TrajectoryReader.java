@@ -30,6 +30,10 @@ public final class TrajectoryReader {
         Objects.requireNonNull(options, "options");
         checkOptions(options);
         String source = path.toString();
+        org.trajeval.core.io.bag.Bags.Kind bag = org.trajeval.core.io.bag.Bags.kind(path);
+        if (bag != null || options.format() == TrajectoryFormat.BAG) {
+            throw BagTopics.needed(path, source);
+        }
         checkFile(path, source, options.maxBytes());
         TrajectoryFormat format = options.format();
         String reason = "given";
@@ -43,6 +47,7 @@ public final class TrajectoryReader {
             case TUM -> TumReader.read(path, source, options, reason);
             case KITTI -> KittiReader.read(path, source, options, reason);
             case EUROC -> EurocReader.read(path, source, options, reason);
+            case BAG -> throw BagTopics.needed(path, source);
         };
     }
 
