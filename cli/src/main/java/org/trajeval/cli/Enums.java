@@ -81,14 +81,14 @@ final class Enums {
         }
     }
 
-    /** auto|csv|tum|kitti|euroc; auto gives null. */
+    /** auto|csv|tum|kitti|euroc|bag; auto gives null. */
     static final class FormatConverter implements ITypeConverter<TrajectoryFormat> {
         @Override
         public TrajectoryFormat convert(String v) {
             if ("auto".equalsIgnoreCase(v.trim())) {
                 return null;
             }
-            return parse(TrajectoryFormat.class, v, "auto|csv|tum|kitti|euroc");
+            return parse(TrajectoryFormat.class, v, "auto|csv|tum|kitti|euroc|bag");
         }
     }
 
@@ -105,6 +105,27 @@ final class Enums {
         @Override
         public TimeUnit convert(String v) {
             return parse(TimeUnit.class, v, "s|ms|us|ns");
+        }
+    }
+
+    /** header|log: which time a pose read from a bag gets. */
+    static final class StampSourceConverter implements ITypeConverter<org.trajeval.core.io.bag.StampSource> {
+        @Override
+        public org.trajeval.core.io.bag.StampSource convert(String v) {
+            String w = v.trim().equalsIgnoreCase("log") ? "log_time" : v;
+            return parse(org.trajeval.core.io.bag.StampSource.class, w, "header|log");
+        }
+    }
+
+    /** tum|kitti|csv: the file formats {@code convert} writes. */
+    static final class OutputFormatConverter implements ITypeConverter<TrajectoryFormat> {
+        @Override
+        public TrajectoryFormat convert(String v) {
+            TrajectoryFormat f = parse(TrajectoryFormat.class, v, "tum|kitti|csv");
+            if (f != TrajectoryFormat.TUM && f != TrajectoryFormat.KITTI && f != TrajectoryFormat.CSV) {
+                throw new TypeConversionException("expected one of tum|kitti|csv, found \"" + v + "\"");
+            }
+            return f;
         }
     }
 }

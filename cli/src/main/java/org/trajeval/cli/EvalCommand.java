@@ -40,20 +40,22 @@ public final class EvalCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "REF", description = "Reference (ground-truth) trajectory file.")
+    @Parameters(index = "0", paramLabel = "REF", description = "Reference (ground-truth) trajectory file, or a bag "
+            + "(with --ref-topic, or as BAG:TOPIC).")
     Path reference;
 
-    @Parameters(index = "1", paramLabel = "EST", description = "Estimated trajectory file.")
+    @Parameters(index = "1", arity = "0..1", paramLabel = "EST", description = "Estimated trajectory file, or a bag "
+            + "(with --est-topic, or as BAG:TOPIC). Left out when both topics come from the bag REF.")
     Path estimate;
 
     @Mixin
     InputOptions input = new InputOptions();
 
     @Option(names = "--convention", paramLabel = "lesson|evo|kitti",
-            description = "Preset of rules (default: ${DEFAULT-VALUE}). lesson: interpolated association, crop, "
+            description = "Preset of rules (default: lesson; evo when an input is a bag, as evo_ape bag/bag2). lesson: interpolated association, crop, "
                     + "se2/se3 alignment, RPE over 1 s for every start pose; evo: nearest within 0.01 s, no "
                     + "alignment, RPE over 1 frame; kitti: index pairing, drift as the headline. Explicit options "
-                    + "override the preset.", defaultValue = "lesson", converter = Enums.ConventionConverter.class)
+                    + "override the preset.", converter = Enums.ConventionConverter.class)
     Convention convention;
 
     @Option(names = "--association", paramLabel = "interpolate|nearest|nearest-interpolated",
@@ -131,6 +133,17 @@ public final class EvalCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
+        if (estimate == null) {
+            if (input.estTopic == null || input.bagSource(reference, true) == null) {
+                throw new IllegalArgumentException("EST is missing: give an estimate file, or a bag as REF with "
+                        + "--ref-topic and --est-topic");
+            }
+            estimate = input.bagSource(reference, true).path();
+        }
+        if (convention == null) {
+            boolean bag = input.bagSource(reference, true) != null || input.bagSource(estimate, false) != null;
+            convention = bag ? Convention.EVO : Convention.LESSON;
+        }
         MemoryBudget.check(reference, estimate, Runtime.getRuntime().maxMemory());
         if (convention == Convention.EVO) {
             input.defaultDuplicates = org.trajeval.core.io.DuplicateTimestamps.KEEP;

@@ -9,6 +9,11 @@ import org.trajeval.core.io.TimeUnit;
 import org.trajeval.core.io.TimestampOrder;
 import org.trajeval.core.io.TrajectoryFormat;
 import org.trajeval.core.io.TrajectoryReader;
+import org.trajeval.core.io.bag.BagLimits;
+import org.trajeval.core.io.bag.BagReadOptions;
+import org.trajeval.core.io.bag.BagSource;
+import org.trajeval.core.io.bag.BagTrajectoryReader;
+import org.trajeval.core.io.bag.StampSource;
 import picocli.CommandLine.Option;
 
 /** How trajectory files are read: the options shared by every command that reads trajectories. */
@@ -66,6 +71,33 @@ public final class InputOptions {
             + "(default: 4 GiB).")
     Long maxBytes;
 
+    @Option(names = "--ref-topic", paramLabel = "TOPIC", description = "Topic of the reference when REF is a bag "
+            + "(MCAP, ROS 1 bag, rosbag2 sqlite3 or folder), or a TF trajectory /tf:PARENT.CHILD. REF:TOPIC works too.")
+    String refTopic;
+
+    @Option(names = "--est-topic", paramLabel = "TOPIC", description = "Topic (or /tf:PARENT.CHILD) of the estimate "
+            + "when EST is a bag; with a single bag argument, both topics are read from it.")
+    String estTopic;
+
+    @Option(names = "--stamps", paramLabel = "header|log", converter = Enums.StampSourceConverter.class,
+            description = "Times of poses read from bags: header (the messages' header.stamp, default, as evo) or log "
+                    + "(the recording's log time).")
+    StampSource stamps;
+
+    @Option(names = "--pose-field", paramLabel = "FIELD.PATH", description = "Field of a bag message type holding "
+            + "the pose (a geometry_msgs/Pose or Transform), for types trajeval does not know, e.g. state.pose.")
+    String poseField;
+
+    /** @return what to read from a bag for the given topic */
+    public BagReadOptions bagOptions(String topic) {
+        return new BagReadOptions(topic, stamps != null ? stamps : StampSource.HEADER, poseField, BagLimits.DEFAULT);
+    }
+
+    /** @return the bag and topic of an input, or null when it is a plain trajectory file */
+    public BagSource bagSource(Path file, boolean reference) {
+        return BagSource.resolve(file.toString(), reference ? refTopic : estTopic);
+    }
+
     /** @return the read options for the reference ({@code reference = true}) or the estimate */
     public ReadOptions readOptions(boolean reference) {
         ReadOptions o = ReadOptions.defaults();
@@ -98,6 +130,10 @@ public final class InputOptions {
 
     /** Reads a trajectory with these options. */
     public LoadedTrajectory read(Path file, boolean reference) {
+        BagSource bag = bagSource(file, reference);
+        if (bag != null) {
+            return BagTrajectoryReader.read(bag.path(), bagOptions(bag.topic()), readOptions(reference));
+        }
         return TrajectoryReader.read(file, readOptions(reference));
     }
 }

@@ -85,6 +85,11 @@ final class TopicPoses {
             PoseLayout[] l = new PoseLayout[1];
             plans.put(c.id(), plan(source, c, options.poseField(), l));
             layouts.put(c.id(), l[0]);
+            if ("transforms".equals(l[0].repeatPath()) && options.poseField() == null) {
+                throw new InputException(source, 0, options.topic(), InputProblem.UNKNOWN_TOPIC, "topic "
+                        + options.topic() + " holds the transforms of many TF frames; read one as "
+                        + options.topic() + ":PARENT.CHILD (trajeval topics lists the TF tree)", options.topic());
+            }
             if (options.stamps() == StampSource.HEADER && !l[0].hasStamp()) {
                 throw new InputException(source, 0, options.topic(), InputProblem.UNKNOWN_TOPIC, "type " + c.type()
                         + " of topic " + options.topic() + " has no header.stamp; read its log times with --stamps log",
