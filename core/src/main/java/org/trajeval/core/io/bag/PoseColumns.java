@@ -44,7 +44,10 @@ final class PoseColumns {
         n = 0;
     }
 
-    /** Trims every column to the pose count, reordered by {@code order} when not null. */
+    /**
+     * Trims every column to the pose count, or picks the poses {@code order} lists (in that order,
+     * possibly fewer) when not null.
+     */
     double[][] columns(int[] order) {
         double[][] all = {t, x, y, z, qw, qx, qy, qz};
         double[][] out = new double[8][];
@@ -52,8 +55,8 @@ final class PoseColumns {
             if (order == null) {
                 out[c] = Arrays.copyOf(all[c], n);
             } else {
-                double[] d = new double[n];
-                for (int i = 0; i < n; i++) {
+                double[] d = new double[order.length];
+                for (int i = 0; i < order.length; i++) {
                     d[i] = all[c][order[i]];
                 }
                 out[c] = d;

@@ -95,6 +95,16 @@ class TfTrajectoryTest {
     }
 
     @Test
+    void repeatedStampOfAnEdgeKeepsTheFirstTransformAsTf2Does() throws IOException {
+        // tf2's TimeCache refuses a second transform with a stamp it already holds
+        Path bag = bag(List.of(List.of(tf(1, "map", "odom", 1, 0, 0, 0)), List.of(tf(1, "map", "odom", 9, 0, 0, 0)),
+                List.of(tf(2, "map", "odom", 2, 0, 0, 0))));
+        SpatialTrajectory t = (SpatialTrajectory) read(bag, "/tf:map.odom").trajectory();
+        assertEquals(2, t.size());
+        assertEquals(1.0, t.x(0), 0.0);
+    }
+
+    @Test
     void frameWithTwoParentsIsRefused() throws IOException {
         Path bag = bag(List.of(List.of(tf(1, "map", "odom", 0, 0, 0, 0)), List.of(tf(2, "world", "odom", 0, 0, 0, 0))));
         InputException e = assertThrows(InputException.class, () -> read(bag, "/tf:map.odom"));
