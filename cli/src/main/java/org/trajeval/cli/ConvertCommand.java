@@ -12,8 +12,18 @@ import org.trajeval.core.InputProblem;
 import org.trajeval.core.io.LoadedTrajectory;
 import org.trajeval.core.io.TrajectoryFormat;
 import org.trajeval.core.io.TrajectoryWriter;
+import java.util.ArrayList;
+import java.util.List;
+import org.trajeval.core.io.DuplicateTimestamps;
+import org.trajeval.core.io.ReadOptions;
+import org.trajeval.core.io.TrajectoryReader;
 import org.trajeval.core.io.bag.BagSource;
-import org.trajeval.core.io.bag.BagTrajectoryReader;
+import org.trajeval.core.options.FileRole;
+import org.trajeval.core.options.PathResolver;
+import org.trajeval.core.options.Setting;
+import org.trajeval.core.options.SettingText;
+import org.trajeval.core.options.SettingValues;
+import org.trajeval.core.options.SettingsResolver;
 import org.trajeval.core.report.ReportJson;
 import org.trajeval.core.traj.PlaneProjection;
 import org.trajeval.core.traj.Plane;
@@ -21,7 +31,6 @@ import org.trajeval.core.traj.PlanarTrajectory;
 import org.trajeval.core.traj.PoseSequence;
 import org.trajeval.core.traj.SpatialTrajectory;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -45,32 +54,68 @@ public final class ConvertCommand implements Callable<Integer> {
     @Option(names = "--topic", paramLabel = "TOPIC", description = "Topic, or /tf:PARENT.CHILD.")
     String topic;
 
-    @Option(names = "--to", paramLabel = "tum|kitti|csv", required = true, converter = Enums.OutputFormatConverter.class,
+    @Option(names = "--to", paramLabel = "tum|kitti|csv", required = true, converter = OutputFormat.class,
             description = "Format of the file written.")
     TrajectoryFormat to;
 
     @Option(names = "--out", paramLabel = "FILE", required = true, description = "The file to write (replaced).")
     Path out;
 
-    @Mixin
-    InputOptions input = new InputOptions();
+    @Option(names = "--stamps", paramLabel = "header|log", description = "Pose times: header (the messages' "
+            + "header.stamp, default) or log (the recording's log time).")
+    String stamps;
+
+    @Option(names = "--pose-field", paramLabel = "FIELD.PATH", description = "Field holding the pose, for types "
+            + "trajeval does not know.")
+    String poseField;
+
+    @Option(names = "--sort", description = "Sort poses by stamp instead of refusing a decreasing one.")
+    boolean sort;
+
+    @Option(names = "--duplicates", paramLabel = "refuse|keep", description = "Poses with equal stamps: refuse "
+            + "(default) or keep them.")
+    String duplicates;
 
     @Option(names = "--verbose", description = "Print stack traces of errors.")
     boolean verbose;
 
     @Override
     public Integer call() {
-        input.refTopic = topic;
-        BagSource source = input.bagSource(bag, true);
-        if (source == null) {
+        // the same settings (and checks) as eval's reference: ref_topic, stamps, pose_field, sort, duplicates
+        List<SettingText> given = new ArrayList<>();
+        Path path = bag;
+        if (topic != null) {
+            given.add(new SettingText(Setting.REF_TOPIC.key(), topic, "--topic"));
+        } else if (!Files.exists(bag)) {
+            BagSource s = BagSource.resolve(bag.toString(), null);
+            if (s != null) {
+                given.add(new SettingText(Setting.REF_TOPIC.key(), s.topic(), "BAG"));
+                path = s.path();
+            }
+        }
+        if (given.isEmpty() && Files.exists(bag)) {
             throw new IllegalArgumentException("name the topic to convert: --topic TOPIC, or BAG:TOPIC");
         }
-        if (Files.exists(out) && sameFile(out, source.path())) {
+        if (stamps != null) {
+            given.add(new SettingText(Setting.STAMPS.key(), stamps, "--stamps"));
+        }
+        if (poseField != null) {
+            given.add(new SettingText(Setting.POSE_FIELD.key(), poseField, "--pose-field"));
+        }
+        if (sort) {
+            given.add(new SettingText(Setting.SORT.key(), "true", "--sort"));
+        }
+        if (duplicates != null) {
+            given.add(new SettingText(Setting.DUPLICATES.key(), duplicates, "--duplicates"));
+        }
+        if (Files.exists(out) && Files.exists(path) && sameFile(out, path)) {
             throw new InputException(out.toString(), 0, null, InputProblem.INVALID_OPTION,
                     "--out names the bag itself; choose another file", null);
         }
-        LoadedTrajectory t = BagTrajectoryReader.read(source.path(), input.bagOptions(source.topic()),
-                input.readOptions(true));
+        SettingValues settings = SettingValues.of(given, null);
+        ReadOptions read = SettingsResolver.readOptions(settings, FileRole.REFERENCE, ReadOptions.defaults()
+                .withDuplicates(DuplicateTimestamps.REFUSE), PathResolver.asWritten());
+        LoadedTrajectory t = TrajectoryReader.read(path, read);
         SpatialTrajectory s = (SpatialTrajectory) t.trajectory();
         StringWriter w = new StringWriter();
         try {
@@ -103,6 +148,20 @@ public final class ConvertCommand implements Callable<Integer> {
             yaw[i] = Math.atan2(p.r(i, 1, 0), p.r(i, 0, 0));
         }
         return PlanarTrajectory.of(t, x, y, yaw);
+    }
+
+    /** tum|kitti|csv: the formats convert writes. */
+    static final class OutputFormat implements picocli.CommandLine.ITypeConverter<TrajectoryFormat> {
+        @Override
+        public TrajectoryFormat convert(String v) {
+            return switch (v.trim().toLowerCase(java.util.Locale.ROOT)) {
+                case "tum" -> TrajectoryFormat.TUM;
+                case "kitti" -> TrajectoryFormat.KITTI;
+                case "csv" -> TrajectoryFormat.CSV;
+                default -> throw new picocli.CommandLine.TypeConversionException("expected one of tum|kitti|csv, found \""
+                        + v + "\"");
+            };
+        }
     }
 
     private static boolean sameFile(Path a, Path b) {

@@ -30,6 +30,7 @@ public final class BagTrajectoryReader {
         Objects.requireNonNull(path, "path");
         Objects.requireNonNull(bag, "bag");
         Objects.requireNonNull(read, "read");
+        Objects.requireNonNull(bag.topic(), "topic");
         String source = path.toString();
         PoseColumns cols = new PoseColumns();
         String reason;
