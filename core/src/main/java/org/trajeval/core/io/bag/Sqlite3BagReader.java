@@ -39,9 +39,14 @@ final class Sqlite3BagReader implements BagContainer {
             try (Statement s = db.createStatement();
                     ResultSet r = s.executeQuery("SELECT id, name, type, serialization_format FROM topics ORDER BY id")) {
                 while (r.next()) {
+                    String name = r.getString(2);
                     String type = r.getString(3);
+                    if (name == null || type == null) {
+                        throw BagProblems.corrupt(source, -1, "row " + r.getInt(1) + " of table topics has no "
+                                + (name == null ? "name" : "type"));
+                    }
                     String[] def = definitions.getOrDefault(type, new String[] {"", ""});
-                    channels.add(new BagChannel(r.getInt(1), r.getString(2), type, def[0], def[1],
+                    channels.add(new BagChannel(r.getInt(1), name, type, def[0], def[1],
                             r.getString(4) == null ? "" : r.getString(4)));
                 }
             }
@@ -64,7 +69,7 @@ final class Sqlite3BagReader implements BagContainer {
             while (r.next()) {
                 String enc = r.getString(2);
                 String text = r.getString(3);
-                if (text != null && !text.isEmpty() && ("ros2msg".equals(enc) || "ros2idl".equals(enc))) {
+                if (r.getString(1) != null && text != null && !text.isEmpty() && ("ros2msg".equals(enc) || "ros2idl".equals(enc))) {
                     out.put(r.getString(1), new String[] {enc, text});
                 }
             }
