@@ -27,8 +27,8 @@ final class Ros1BagReader implements BagContainer {
     private record ChunkRef(long position, int[] connections) {
     }
 
-    /** One record: header fields and where its data is. */
-    private record Record(Map<String, byte[]> fields, byte[] buf, int dataOffset, int dataLength, long end) {
+    /** One record: header fields, the length of its data and the file offset just past it. */
+    private record Record(Map<String, byte[]> fields, int dataLength, long end) {
         int op(String source, long at) {
             byte[] op = fields.get("op");
             if (op == null || op.length != 1) {
@@ -94,7 +94,7 @@ final class Ros1BagReader implements BagContainer {
             throw BagProblems.length(source, dlenAt, what + " data length", dlen, size - dlenAt - 4);
         }
         Map<String, byte[]> fields = fields(head, 0, head.length, at + 4);
-        return new Record(fields, null, 0, (int) Math.min(dlen, Integer.MAX_VALUE), dlenAt + 4 + dlen);
+        return new Record(fields, (int) Math.min(dlen, Integer.MAX_VALUE), dlenAt + 4 + dlen);
     }
 
     private byte[] data(long dataAt, Record r, String what) {

@@ -21,14 +21,20 @@ final class Rosbag2Folder implements BagContainer {
     private final List<BagContainer> parts;
     private final String kind;
     private final List<BagChannel> channels = new ArrayList<>();
+    /** Per file: the file's channel id to the renumbered channel. */
+    private final List<java.util.Map<Integer, BagChannel>> byFile = new ArrayList<>();
 
     private Rosbag2Folder(List<BagContainer> parts, String kind) {
         this.parts = parts;
         this.kind = kind;
         for (int i = 0; i < parts.size(); i++) {
+            java.util.Map<Integer, BagChannel> m = new java.util.HashMap<>();
             for (BagChannel c : parts.get(i).channels()) {
-                channels.add(renumbered(i, c));
+                BagChannel r = renumbered(i, c);
+                channels.add(r);
+                m.put(c.id(), r);
             }
+            byFile.add(m);
         }
     }
 
@@ -95,9 +101,15 @@ final class Rosbag2Folder implements BagContainer {
     public void read(Predicate<BagChannel> wanted, MessageSink sink) {
         for (int i = 0; i < parts.size(); i++) {
             int file = i;
-            parts.get(i).read(c -> wanted.test(renumbered(file, c)),
-                    (c, t, d, o, l) -> sink.message(renumbered(file, c), t, d, o, l));
+            java.util.Map<Integer, BagChannel> m = byFile.get(i);
+            parts.get(i).read(c -> wanted.test(of(m, file, c)), (c, t, d, o, l) -> sink.message(of(m, file, c), t, d, o, l));
         }
+    }
+
+    /** The renumbered channel (channels a linear scan finds late are renumbered on the way). */
+    private static BagChannel of(java.util.Map<Integer, BagChannel> m, int file, BagChannel c) {
+        BagChannel r = m.get(c.id());
+        return r != null ? r : renumbered(file, c);
     }
 
     @Override
