@@ -107,7 +107,11 @@ class SettingsAcrossFrontEndsTest {
                 new Case("fr2_desk lesson, duplicates kept, max gap", r.resolve("fr2_desk_groundtruth.txt"),
                         r.resolve("fr2_desk_ORB.txt"), settings("duplicates", "keep", "max_gap_s", "0.5"), true),
                 new Case("fr1_xyz planar projection", r.resolve("freiburg1_xyz-groundtruth.txt"),
-                        r.resolve("freiburg1_xyz-rgbdslam.txt"), settings("planar", "true", "alignment", "se2"), true));
+                        r.resolve("freiburg1_xyz-rgbdslam.txt"), settings("planar", "true", "alignment", "se2"), true),
+                // two topics of one ROS 2 bag (an inline Kafka event carries text files only: no bag)
+                new Case("nav2 MCAP topics", r.resolve("ros/nav2_turtlebot.mcap"), r.resolve("ros/nav2_turtlebot.mcap"),
+                        settings("ref_topic", "/amcl_pose", "est_topic", "/odom", "stamps", "header", "pose_field",
+                        "pose.pose", "alignment", "se3"), false));
     }
 
     /** A seeded planar pair with ms stamps, ';' delimiter, own column names and one swapped line (needs sort). */

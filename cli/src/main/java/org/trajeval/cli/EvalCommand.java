@@ -2,13 +2,20 @@ package org.trajeval.cli;
 
 import java.io.PrintWriter;
 import java.nio.file.Path;
+import java.nio.file.Files;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.Callable;
 import org.trajeval.core.eval.Evaluator;
 import org.trajeval.core.io.LoadedTrajectory;
 import org.trajeval.core.io.ReadOptions;
 import org.trajeval.core.options.DataKind;
 import org.trajeval.core.options.FileRole;
+import org.trajeval.core.io.bag.BagSource;
+import org.trajeval.core.io.bag.Bags;
 import org.trajeval.core.options.PathResolver;
+import org.trajeval.core.options.Setting;
+import org.trajeval.core.options.SettingText;
 import org.trajeval.core.options.SettingValues;
 import org.trajeval.core.options.SettingsResolver;
 import org.trajeval.core.report.EvaluationReport;
@@ -34,10 +41,12 @@ public final class EvalCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "REF", description = "Reference (ground-truth) trajectory file.")
+    @Parameters(index = "0", paramLabel = "REF", description = "Reference (ground-truth) trajectory file, or a ROS "
+            + "bag (with --ref-topic, or written BAG:TOPIC).")
     Path reference;
 
-    @Parameters(index = "1", paramLabel = "EST", description = "Estimated trajectory file.")
+    @Parameters(index = "1", arity = "0..1", paramLabel = "EST", description = "Estimated trajectory file, or a bag "
+            + "(with --est-topic, or BAG:TOPIC). Left out when both topics come from the bag REF.")
     Path estimate;
 
     @Option(names = "--max-poses", paramLabel = "N", description = "Refuse files with more poses "
@@ -64,8 +73,20 @@ public final class EvalCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        SettingValues settings = SettingValues.of(SettingOptions.given(spec.commandLine().getParseResult()), null);
+        List<SettingText> given = new ArrayList<>(SettingOptions.given(spec.commandLine().getParseResult()));
+        reference = bagTopic(reference, Setting.REF_TOPIC, "REF", given);
+        if (estimate == null) {
+            boolean oneBag = Bags.kind(reference) != null && given.stream().anyMatch(t -> t.key().equals(
+                    Setting.EST_TOPIC.key()));
+            if (!oneBag) {
+                throw UsageProblem.of("EST", "EST is missing: give an estimate file, or a bag as REF with "
+                        + "--est-topic (and --ref-topic)", null);
+            }
+            estimate = reference;
+        }
+        estimate = bagTopic(estimate, Setting.EST_TOPIC, "EST", given);
         MemoryBudget.check(reference, estimate, Runtime.getRuntime().maxMemory());
+        SettingValues settings = SettingValues.of(given, null);
         ReadOptions limits = ReadOptions.defaults();
         if (maxPoses != null || maxBytes != null) {
             limits = limits.withLimits(maxBytes != null ? maxBytes : limits.maxBytes(),
@@ -96,5 +117,25 @@ public final class EvalCommand implements Callable<Integer> {
         }
         o.flush();
         return ExitCodes.OK;
+    }
+
+    /**
+     * A path written BAG:TOPIC becomes the bag and the topic setting (so a bag named either way is
+     * read, and sets the default convention, the same way).
+     */
+    private static Path bagTopic(Path arg, Setting topic, String name, List<SettingText> given) {
+        if (Files.exists(arg)) {
+            return arg; // a file, or a bag named as is (its topic from the option)
+        }
+        BagSource bag = BagSource.resolve(arg.toString(), null);
+        if (bag == null) {
+            return arg; // the reader says what is wrong with it
+        }
+        if (given.stream().anyMatch(t -> t.key().equals(topic.key()))) {
+            throw UsageProblem.of(topic.flag(), name + " names its topic (" + bag.topic() + ") and " + topic.flag()
+                    + " names one too; give it once", bag.topic());
+        }
+        given.add(new SettingText(topic.key(), bag.topic(), name));
+        return bag.path();
     }
 }

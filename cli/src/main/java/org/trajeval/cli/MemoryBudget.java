@@ -50,6 +50,9 @@ final class MemoryBudget {
 
     /** Estimated number of lines: size / mean length of the first 64 KiB's lines; 0 when unreadable. */
     static long estimatePoses(Path p) {
+        if (org.trajeval.core.io.bag.Bags.kind(p) != null) {
+            return 0; // a bag's size says nothing of its poses; the bag readers bound their own memory
+        }
         try {
             long size = Files.size(p);
             byte[] head = new byte[65536];

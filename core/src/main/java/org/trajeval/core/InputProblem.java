@@ -41,5 +41,11 @@ public enum InputProblem {
     /** A manifest or configuration key is unknown, missing or inconsistent. */
     INVALID_CONFIGURATION,
     /** A path points outside the folder it must stay in. */
-    PATH_ESCAPES
+    PATH_ESCAPES,
+    /** A bag's bytes contradict its own structure: bad magic or CRC, a length past the end, a chunk that lies. */
+    CORRUPT_BAG,
+    /** A bag uses a feature trajeval does not read (compression, message or schema encoding). */
+    UNSUPPORTED_BAG_FEATURE,
+    /** The asked topic, TF frame or field does not exist in the bag, or holds no pose. */
+    UNKNOWN_TOPIC
 }

@@ -11,7 +11,9 @@ public enum TrajectoryFormat {
     /** KITTI odometry: 12 numbers per line (3x4 pose matrix, row-major), no stamps; optional times file. */
     KITTI,
     /** EuRoC ground-truth CSV: {@code t[ns], p_x, p_y, p_z, q_w, q_x, q_y, q_z, ...}, w first. */
-    EUROC;
+    EUROC,
+    /** A ROS bag (MCAP, ROS 1 bag, rosbag2 sqlite3 file or folder): one topic or TF trajectory of it. */
+    BAG;
 
     /** @return the lower-case name used on the command line and in reports */
     public String id() {

@@ -6,10 +6,15 @@ import java.nio.file.Path;
 import java.util.Objects;
 import org.trajeval.core.InputException;
 import org.trajeval.core.InputProblem;
+import org.trajeval.core.io.bag.BagReadOptions;
+import org.trajeval.core.io.bag.BagSource;
+import org.trajeval.core.io.bag.BagTrajectoryReader;
+import org.trajeval.core.io.bag.Bags;
 
 /**
  * Reads trajectory files of every supported format ({@link TrajectoryFormat}): planar CSV, TUM,
- * KITTI and EuRoC. Numbers are read as evo reads them (the double nearest to the decimal text);
+ * KITTI and EuRoC, and one topic of a ROS bag ({@link BagTrajectoryReader}: the topic from the
+ * read options or from a path written {@code BAG:TOPIC}). Numbers are read as evo reads them (the double nearest to the decimal text);
  * times end up in seconds. Every refusal is an {@link InputException} naming file, line, column,
  * what was expected and what was found; no other exception escapes for bad file content.
  */
@@ -30,6 +35,14 @@ public final class TrajectoryReader {
         Objects.requireNonNull(options, "options");
         checkOptions(options);
         String source = path.toString();
+        BagReadOptions bagOptions = options.bag() != null ? options.bag() : BagReadOptions.DEFAULT;
+        BagSource bag = BagSource.resolve(source, bagOptions.topic());
+        if (bag != null) {
+            return BagTrajectoryReader.read(bag.path(), bagOptions.withTopic(bag.topic()), options);
+        }
+        if (Bags.kind(path) != null || options.format() == TrajectoryFormat.BAG) {
+            throw BagTopics.needed(path, source);
+        }
         checkFile(path, source, options.maxBytes());
         TrajectoryFormat format = options.format();
         String reason = "given";
@@ -43,6 +56,7 @@ public final class TrajectoryReader {
             case TUM -> TumReader.read(path, source, options, reason);
             case KITTI -> KittiReader.read(path, source, options, reason);
             case EUROC -> EurocReader.read(path, source, options, reason);
+            case BAG -> throw BagTopics.needed(path, source);
         };
     }
 

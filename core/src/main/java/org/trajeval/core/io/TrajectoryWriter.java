@@ -69,4 +69,25 @@ public final class TrajectoryWriter {
         }
         out.flush();
     }
+
+    /**
+     * Writes KITTI poses: per pose the first three rows of the 4x4 pose matrix, row-major
+     * ({@code r11 r12 r13 tx r21 r22 r23 ty r31 r32 r33 tz}); no stamps. The caller closes the writer.
+     */
+    public static void writeKitti(SpatialTrajectory trajectory, Writer out) throws IOException {
+        StringBuilder sb = new StringBuilder(256);
+        org.trajeval.core.traj.PoseSequence p = trajectory.poses();
+        for (int i = 0; i < trajectory.size(); i++) {
+            sb.setLength(0);
+            double[] t = {p.x(i), p.y(i), p.z(i)};
+            for (int row = 0; row < 3; row++) {
+                for (int col = 0; col < 3; col++) {
+                    sb.append(p.r(i, row, col)).append(' ');
+                }
+                sb.append(t[row]).append(row == 2 ? '\n' : ' ');
+            }
+            out.append(sb);
+        }
+        out.flush();
+    }
 }

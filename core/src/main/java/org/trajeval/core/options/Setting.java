@@ -40,8 +40,20 @@ public enum Setting {
             "kitti", "KITTI times file of the reference (one time in s per line)."),
     EST_TIMES("est_times", "--est-times", SettingKind.PATH, SettingScope.READ_ESTIMATE, "FILE", "s",
             "kitti", "KITTI times file of the estimate (one time in s per line)."),
+    REF_TOPIC("ref_topic", "--ref-topic", SettingKind.TEXT, SettingScope.READ_REFERENCE, "TOPIC", "", "bag",
+            "Topic of the reference when it is a ROS bag (MCAP, ROS 1 bag, rosbag2 sqlite3 file or folder), or a TF "
+            + "trajectory /tf:PARENT.CHILD; a path written BAG:TOPIC names it too. A given topic makes evo the "
+            + "default convention."),
+    EST_TOPIC("est_topic", "--est-topic", SettingKind.TEXT, SettingScope.READ_ESTIMATE, "TOPIC", "", "bag",
+            "Topic (or /tf:PARENT.CHILD) of the estimate when it is a bag."),
+    STAMPS("stamps", "--stamps", SettingKind.CHOICE, SettingScope.READ_BOTH, "header|log", "", "bag",
+            "Times of poses read from bags: header (the messages' header.stamp, default, as evo) or log (the "
+            + "recording's log time)."),
+    POSE_FIELD("pose_field", "--pose-field", SettingKind.TEXT, SettingScope.READ_BOTH, "FIELD.PATH", "", "bag",
+            "Field of a bag message type holding the pose (a geometry_msgs Pose or Transform), for types trajeval "
+            + "does not know (it knows PoseStamped, PoseWithCovarianceStamped, TransformStamped, Odometry, Path)."),
     CONVENTION("convention", "--convention", SettingKind.CHOICE, SettingScope.EVALUATION, "lesson|evo|kitti", "",
-            "all", "Preset of rules (default lesson). lesson: interpolated association, crop, se2/se3 alignment "
+            "all", "Preset of rules (default lesson; evo when a bag topic is given). lesson: interpolated association, crop, se2/se3 alignment "
             + "(se2 for planar data, se3 for SE(3) data), RPE over 1 s for every start pose; evo: nearest within "
             + "0.01 s, duplicates kept, no alignment, RPE over 1 frame; kitti: index pairing, drift. Explicit "
             + "settings override the preset."),
@@ -199,7 +211,7 @@ public enum Setting {
             case NUMBERS -> "numbers > 0 separated by commas" + u;
             case PATH -> "a file path";
             case TEXT -> this == COLUMNS ? "4 column names separated by commas (time, x, y, yaw)"
-                    : "a single character";
+                    : this == DELIMITER ? "a single character" : "a non-empty " + values.toLowerCase(Locale.ROOT);
         };
     }
 
@@ -224,7 +236,8 @@ public enum Setting {
             case SWITCH -> t.equalsIgnoreCase("true") ? Boolean.TRUE : t.equalsIgnoreCase("false") ? Boolean.FALSE : null;
             case NUMBERS -> numbers(t);
             case PATH -> t.isEmpty() ? null : t;
-            case TEXT -> this == COLUMNS ? columns(t) : text != null && text.length() == 1 ? text : null;
+            case TEXT -> this == COLUMNS ? columns(t) : this == DELIMITER ? (text != null && text.length() == 1 ? text
+                    : null) : t.isEmpty() ? null : t;
         };
         if (v == null) {
             String name = where.startsWith("--") ? where : "'" + where + "'";

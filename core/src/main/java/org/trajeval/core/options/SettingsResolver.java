@@ -16,6 +16,8 @@ import org.trajeval.core.io.ReadOptions;
 import org.trajeval.core.io.TimeUnit;
 import org.trajeval.core.io.TimestampOrder;
 import org.trajeval.core.io.TrajectoryFormat;
+import org.trajeval.core.io.bag.BagReadOptions;
+import org.trajeval.core.io.bag.StampSource;
 import org.trajeval.core.metric.DriftOptions;
 import org.trajeval.core.metric.PairSelection;
 import org.trajeval.core.metric.PairsFrom;
@@ -32,9 +34,12 @@ public final class SettingsResolver {
     private SettingsResolver() {
     }
 
-    /** @return the convention of the settings (lesson when not given) */
+    /** @return the convention of the settings (when not given: evo when a bag topic is given, as evo_ape bag; else lesson) */
     public static Convention convention(SettingValues s) {
-        return s.has(Setting.CONVENTION) ? Convention.valueOf(upper(Setting.CONVENTION, s)) : Convention.LESSON;
+        if (s.has(Setting.CONVENTION)) {
+            return Convention.valueOf(upper(Setting.CONVENTION, s));
+        }
+        return s.has(Setting.REF_TOPIC) || s.has(Setting.EST_TOPIC) ? Convention.EVO : Convention.LESSON;
     }
 
     /**
@@ -65,6 +70,14 @@ public final class SettingsResolver {
                 ? DuplicateTimestamps.valueOf(upper(Setting.DUPLICATES, s))
                 : convention(s) == Convention.EVO ? DuplicateTimestamps.KEEP : DuplicateTimestamps.REFUSE;
         o = o.withDuplicates(dup);
+        Setting topic = role == FileRole.REFERENCE ? Setting.REF_TOPIC : Setting.EST_TOPIC;
+        if (s.has(topic) || s.has(Setting.STAMPS) || s.has(Setting.POSE_FIELD)) {
+            BagReadOptions b = base.bag() != null ? base.bag() : BagReadOptions.DEFAULT;
+            o = o.withBag(new BagReadOptions(s.has(topic) ? (String) s.get(topic) : b.topic(),
+                    s.has(Setting.STAMPS) ? ("log".equals(s.get(Setting.STAMPS)) ? StampSource.LOG_TIME
+                            : StampSource.HEADER) : b.stamps(),
+                    s.has(Setting.POSE_FIELD) ? (String) s.get(Setting.POSE_FIELD) : b.poseField(), b.limits()));
+        }
         Setting times = role == FileRole.REFERENCE ? Setting.REF_TIMES : Setting.EST_TIMES;
         if (s.has(times)) {
             o = o.withKittiTimes(paths.resolve((String) s.get(times), s.where(times)));

@@ -1,0 +1,33 @@
+package org.trajeval.core.io.bag;
+
+import java.util.Objects;
+
+/**
+ * What to read from a bag.
+ *
+ * @param topic a topic name ({@code /odom}) or a TF trajectory in evo's syntax ({@code /tf:map.base_link});
+ *     null when the path names it ({@code BAG:TOPIC})
+ * @param stamps header stamps (default, as evo) or log times
+ * @param poseField the field holding the pose for a type trajeval does not know ({@code a.b.pose}), or null
+ * @param limits record and message limits
+ */
+public record BagReadOptions(String topic, StampSource stamps, String poseField, BagLimits limits) {
+    /** No topic, header stamps, the type's own pose field, default limits. */
+    public static final BagReadOptions DEFAULT = new BagReadOptions(null, StampSource.HEADER, null, BagLimits.DEFAULT);
+
+    /** @throws NullPointerException on a missing stamp source or limits */
+    public BagReadOptions {
+        Objects.requireNonNull(stamps, "stamps");
+        Objects.requireNonNull(limits, "limits");
+    }
+
+    /** @return header stamps, the type's own pose field, default limits */
+    public static BagReadOptions of(String topic) {
+        return new BagReadOptions(topic, StampSource.HEADER, null, BagLimits.DEFAULT);
+    }
+
+    /** @return a copy reading another topic */
+    public BagReadOptions withTopic(String t) {
+        return new BagReadOptions(t, stamps, poseField, limits);
+    }
+}
