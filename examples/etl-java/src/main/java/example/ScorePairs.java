@@ -6,10 +6,9 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
+import java.util.Map;
 import org.trajeval.api.TrajectoryEvaluator;
 import org.trajeval.core.InputException;
-import org.trajeval.core.eval.Convention;
 import org.trajeval.core.report.EvaluationReport;
 import org.trajeval.core.report.ReportJson;
 
@@ -41,8 +40,9 @@ public final class ScorePairs {
         List<Pair> pairs = readPairs(table);
         Files.createDirectories(out);
 
-        // one evaluator for the whole job: immutable and safe to share between threads
-        TrajectoryEvaluator evaluator = TrajectoryEvaluator.of(Convention.LESSON);
+        // one evaluator for the whole job: immutable and safe to share between threads; the settings
+        // are trajeval eval's and run.yaml's (here the default convention, written out)
+        TrajectoryEvaluator evaluator = TrajectoryEvaluator.of(Map.of("convention", "lesson"));
         List<String> rows = pairs.parallelStream().map(p -> score(evaluator, p, out)).toList();
 
         List<String> summary = new ArrayList<>();

@@ -1,18 +1,24 @@
 package org.trajeval.api;
 
 import java.nio.file.Path;
+import java.util.Map;
 import java.util.Objects;
 import org.trajeval.core.InputException;
-import org.trajeval.core.eval.Convention;
-import org.trajeval.core.eval.EvaluationOptions;
+import org.trajeval.core.InputProblem;
 import org.trajeval.core.eval.Evaluator;
-import org.trajeval.core.io.DuplicateTimestamps;
 import org.trajeval.core.io.LoadedTrajectory;
 import org.trajeval.core.io.ReadOptions;
 import org.trajeval.core.io.TrajectoryFormat;
 import org.trajeval.core.io.TrajectoryReader;
+import org.trajeval.core.options.DataKind;
+import org.trajeval.core.options.FileRole;
+import org.trajeval.core.options.PathResolver;
+import org.trajeval.core.options.Setting;
+import org.trajeval.core.options.SettingScope;
+import org.trajeval.core.options.SettingValues;
+import org.trajeval.core.options.SettingsResolver;
+import org.trajeval.core.options.SettingsTree;
 import org.trajeval.core.report.EvaluationReport;
-import org.trajeval.core.traj.PlanarTrajectory;
 
 /**
  * The Java entry point of trajeval: scores an estimate against a reference (ground truth) and
@@ -20,81 +26,97 @@ import org.trajeval.core.traj.PlanarTrajectory;
  * files and settings (ATE, RPE, optional drift; positions in m, angles in rad, times in s).
  *
  * <pre>{@code
- * TrajectoryEvaluator evaluator = TrajectoryEvaluator.of(Convention.LESSON);
+ * TrajectoryEvaluator evaluator = TrajectoryEvaluator.of(Map.of("convention", "evo", "alignment", "se3"));
  * EvaluationReport report = evaluator.evaluate(Path.of("truth.txt"), Path.of("estimate.txt"));
  * double ateRmseM = report.ate().transM().rmse();
  * }</pre>
  *
- * <p>Settings: a {@link Convention} (its preset, resolved per pair as {@code trajeval eval}
- * does: the lesson's se2 alignment for planar data, se3 for SE(3) data), or fully resolved
- * {@link EvaluationOptions}. Files are read with their format detected from extension and content;
- * equal timestamps are refused, except under the evo convention, which keeps them as evo does.
+ * <p>Settings are those of {@code trajeval eval}, a suite manifest's {@code metrics} and a
+ * pipeline {@code run.yaml}: the same keys, values, defaults and checks (one table, README
+ * "Evaluation settings"). As there, the convention's preset is resolved per pair from the data
+ * (the lesson's se2 alignment for planar data, se3 for SE(3) data), and file formats are detected
+ * from extension and content unless a format is set.
  *
  * <p>Thread safety: immutable; one instance may evaluate any number of pairs from any number of
  * threads at once. Each call works on the caller's thread only.
  *
- * <p>Errors: bad input (unreadable or malformed file, no overlap in time, too few poses, a
- * degenerate alignment) throws {@link InputException}, whose fields name the source, line,
- * column and problem; invalid arrays throw {@link IllegalArgumentException}.
+ * <p>Errors: bad settings, bad input (unreadable or malformed file, no overlap in time, too few
+ * poses, a degenerate alignment) throw {@link InputException}, whose fields name the source, line,
+ * column or setting, and the problem; invalid arrays throw {@link IllegalArgumentException}.
  */
 public final class TrajectoryEvaluator {
     /** The {@code inputs.*.format} of a trajectory given as arrays. */
     public static final String MEMORY_FORMAT = "memory";
+    /** How refusals of the settings name their source. */
+    public static final String SETTINGS_SOURCE = "settings";
 
-    private final Convention convention;
-    private final EvaluationOptions options;
+    private final SettingValues settings;
 
-    private TrajectoryEvaluator(Convention convention, EvaluationOptions options) {
-        this.convention = convention;
-        this.options = options;
+    private TrajectoryEvaluator(SettingValues settings) {
+        this.settings = settings;
     }
 
-    /** @return an evaluator with a convention's preset (resolved per pair for planar or SE(3) data) */
-    public static TrajectoryEvaluator of(Convention convention) {
-        return new TrajectoryEvaluator(Objects.requireNonNull(convention, "convention"), null);
-    }
-
-    /** @return an evaluator with these options for every pair, whatever its data */
-    public static TrajectoryEvaluator of(EvaluationOptions options) {
-        Objects.requireNonNull(options, "options");
-        return new TrajectoryEvaluator(options.convention(), options);
+    /** @return an evaluator with every default (the lesson's convention), as {@code trajeval eval REF EST} */
+    public static TrajectoryEvaluator withDefaults() {
+        return new TrajectoryEvaluator(SettingValues.DEFAULTS);
     }
 
     /**
-     * Reads and scores two trajectory files (CSV, TUM, KITTI, EuRoC; format detected).
+     * An evaluator with settings, checked now.
+     *
+     * @param settings keys and values as in a {@code run.yaml} (for example {@code convention: evo},
+     *     {@code alignment: se3}, {@code rpe_delta: 10}, {@code rpe_unit: frames}); values are
+     *     strings, numbers, booleans or lists of them; a nested map joins its keys with '_'
+     *     ({@code rpe: {delta: 1, unit: s}}); path values ({@code ref_times}) are taken as written
+     * @throws InputException (problem {@link InputProblem#INVALID_CONFIGURATION}) on an unknown key,
+     *     a value outside its type or range, or settings that exclude each other, naming the key
+     */
+    public static TrajectoryEvaluator of(Map<String, ?> settings) {
+        Objects.requireNonNull(settings, "settings");
+        return new TrajectoryEvaluator(SettingValues.of(SettingsTree.flatten(settings, "", SETTINGS_SOURCE),
+                SETTINGS_SOURCE));
+    }
+
+    /**
+     * Reads and scores two trajectory files (CSV, TUM, KITTI, EuRoC).
      *
      * @throws InputException when a file cannot be read or the pair cannot be scored
      */
     public EvaluationReport evaluate(Path reference, Path estimate) {
-        ReadOptions read = ReadOptions.defaults().withDuplicates(
-                convention == Convention.EVO ? DuplicateTimestamps.KEEP : DuplicateTimestamps.REFUSE);
-        LoadedTrajectory ref = TrajectoryReader.read(Objects.requireNonNull(reference, "reference"), read);
-        LoadedTrajectory est = TrajectoryReader.read(Objects.requireNonNull(estimate, "estimate"), read);
-        return Evaluator.evaluate(ref, est, optionsFor(ref, est));
+        Objects.requireNonNull(reference, "reference");
+        Objects.requireNonNull(estimate, "estimate");
+        LoadedTrajectory ref = TrajectoryReader.read(reference, SettingsResolver.readOptions(settings,
+                FileRole.REFERENCE, ReadOptions.defaults(), PathResolver.asWritten()));
+        LoadedTrajectory est = TrajectoryReader.read(estimate, SettingsResolver.readOptions(settings,
+                FileRole.ESTIMATE, ReadOptions.defaults(), PathResolver.asWritten()));
+        return Evaluator.evaluate(ref, est, SettingsResolver.evaluationOptions(settings,
+                DataKind.of(ref.trajectory(), est.trajectory())));
     }
 
     /**
      * Scores two trajectories given as arrays. The report's inputs have format
      * {@value #MEMORY_FORMAT}, the names given to {@link Poses}, and no SHA-256.
      *
-     * @throws InputException when the pair cannot be scored (no overlap in time, too few poses,
-     *     degenerate alignment)
+     * @throws InputException when a setting of file reading was given (format, columns, sort, ...:
+     *     arrays are not read), or when the pair cannot be scored (no overlap in time, too few
+     *     poses, degenerate alignment)
      */
     public EvaluationReport evaluate(Poses reference, Poses estimate) {
-        LoadedTrajectory ref = inMemory(Objects.requireNonNull(reference, "reference"));
-        LoadedTrajectory est = inMemory(Objects.requireNonNull(estimate, "estimate"));
-        EvaluationReport r = Evaluator.evaluate(ref, est, optionsFor(ref, est));
+        Objects.requireNonNull(reference, "reference");
+        Objects.requireNonNull(estimate, "estimate");
+        for (Setting s : Setting.values()) {
+            if (s.scope() != SettingScope.EVALUATION && settings.has(s)) {
+                throw new InputException(SETTINGS_SOURCE, 0, settings.where(s), InputProblem.INVALID_CONFIGURATION,
+                        "'" + settings.where(s) + "' applies to reading files; trajectories given as arrays are not "
+                                + "read (leave it out)", String.valueOf(settings.asText().get(s.key())));
+            }
+        }
+        LoadedTrajectory ref = inMemory(reference);
+        LoadedTrajectory est = inMemory(estimate);
+        EvaluationReport r = Evaluator.evaluate(ref, est, SettingsResolver.evaluationOptions(settings,
+                DataKind.of(ref.trajectory(), est.trajectory())));
         return r.withInputs(new EvaluationReport.Inputs(memoryInput(r.inputs().reference()),
                 memoryInput(r.inputs().estimate())));
-    }
-
-    private EvaluationOptions optionsFor(LoadedTrajectory ref, LoadedTrajectory est) {
-        if (options != null) {
-            return options;
-        }
-        boolean planarData = ref.trajectory() instanceof PlanarTrajectory
-                && est.trajectory() instanceof PlanarTrajectory;
-        return EvaluationOptions.preset(convention, planarData);
     }
 
     private static LoadedTrajectory inMemory(Poses p) {

@@ -10,12 +10,9 @@
  *   <li>{@code org.trajeval.core}: {@code Version}, {@code InputException}, {@code InputProblem};</li>
  *   <li>{@code org.trajeval.core.report}: {@code EvaluationReport} (with its nested records) and
  *       {@code ReportJson};</li>
- *   <li>{@code org.trajeval.core.eval}: {@code EvaluationOptions}, {@code Convention},
- *       {@code PlanarProjection};</li>
- *   <li>the option types those use: {@code org.trajeval.core.align.AlignmentModel},
- *       {@code org.trajeval.core.assoc.AssociationMethod}, {@code org.trajeval.core.assoc.OverlapPolicy},
- *       {@code org.trajeval.core.metric.DriftOptions}, {@code PairSelection}, {@code PairsFrom},
- *       {@code RpeUnit}.</li>
+ *   <li>the settings' keys and values (the table of {@code org.trajeval.core.options.Setting},
+ *       shared with {@code trajeval eval}, suite manifests and {@code run.yaml}): a key is not
+ *       removed and keeps its meaning within a major version.</li>
  * </ul>
  * Everything else in the published artefacts ({@code trajeval-core}, {@code trajeval-cli},
  * {@code trajeval-pipeline}, ...) is internal: public only so that trajeval's own modules can use

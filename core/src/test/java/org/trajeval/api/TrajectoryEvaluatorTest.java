@@ -14,6 +14,7 @@ import java.nio.file.Paths;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Random;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -22,9 +23,6 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.trajeval.core.InputException;
 import org.trajeval.core.InputProblem;
-import org.trajeval.core.align.AlignmentModel;
-import org.trajeval.core.eval.Convention;
-import org.trajeval.core.eval.EvaluationOptions;
 import org.trajeval.core.report.EvaluationReport;
 
 class TrajectoryEvaluatorTest {
@@ -51,8 +49,7 @@ class TrajectoryEvaluatorTest {
         }
         assertTrue(record != null, "evo_reference.json has the fr1_xyz rgbdslam se3 record");
 
-        TrajectoryEvaluator evaluator = TrajectoryEvaluator.of(
-                EvaluationOptions.preset(Convention.EVO).withAlignment(AlignmentModel.SE3));
+        TrajectoryEvaluator evaluator = TrajectoryEvaluator.of(Map.of("convention", "evo", "alignment", "se3"));
         EvaluationReport report = evaluator.evaluate(dir.resolve("freiburg1_xyz-groundtruth.txt"),
                 dir.resolve("freiburg1_xyz-rgbdslam.txt"));
 
@@ -70,7 +67,7 @@ class TrajectoryEvaluatorTest {
         double[][] est = curvedPlanarPath(400, new Random(12), 0.02, 0.3);
         Path refFile = writeCsv(tmp.resolve("ref.csv"), ref);
         Path estFile = writeCsv(tmp.resolve("est.csv"), est);
-        TrajectoryEvaluator evaluator = TrajectoryEvaluator.of(Convention.LESSON);
+        TrajectoryEvaluator evaluator = TrajectoryEvaluator.withDefaults();
 
         EvaluationReport fromFiles = evaluator.evaluate(refFile, estFile);
         EvaluationReport fromArrays = evaluator.evaluate(Poses.planar("truth", ref[0], ref[1], ref[2], ref[3]),
@@ -95,8 +92,7 @@ class TrajectoryEvaluatorTest {
         for (int i = 0; i < shiftedY.length; i++) {
             shiftedY[i] += 0.10;
         }
-        TrajectoryEvaluator evaluator = TrajectoryEvaluator.of(
-                EvaluationOptions.preset(Convention.LESSON).withAlignment(AlignmentModel.NONE));
+        TrajectoryEvaluator evaluator = TrajectoryEvaluator.of(Map.of("alignment", "none"));
         EvaluationReport r = evaluator.evaluate(Poses.planar("ref", ref[0], ref[1], ref[2], ref[3]),
                 Poses.planar("est", ref[0], ref[1], shiftedY, ref[3]));
         assertEquals(0.10, r.ate().transM().rmse(), POSITION_TOL_M);
@@ -131,7 +127,7 @@ class TrajectoryEvaluatorTest {
             eqy[i] = -hx * qz[i];
             eqz[i] = hw * qz[i];
         }
-        EvaluationReport r = TrajectoryEvaluator.of(Convention.LESSON).evaluate(
+        EvaluationReport r = TrajectoryEvaluator.withDefaults().evaluate(
                 Poses.spatial("ref", t, x, y, z, qw, qx, qy, qz), Poses.spatial("est", t, ex, ey, ez, eqw, eqx, eqy, eqz));
         assertEquals("se3", r.alignment().model());
         assertEquals(0.0, r.ate().transM().rmse(), POSITION_TOL_M);
@@ -140,7 +136,7 @@ class TrajectoryEvaluatorTest {
 
     @Test
     void oneEvaluatorScoresManyPairsFromManyThreadsAtOnce() throws Exception {
-        TrajectoryEvaluator evaluator = TrajectoryEvaluator.of(Convention.LESSON);
+        TrajectoryEvaluator evaluator = TrajectoryEvaluator.withDefaults();
         double[][] ref = curvedPlanarPath(3000, new Random(5), 0.0, 0.0);
         List<Poses> estimates = new ArrayList<>();
         List<EvaluationReport> sequential = new ArrayList<>();
@@ -175,7 +171,7 @@ class TrajectoryEvaluatorTest {
         Path bad = tmp.resolve("bad.csv");
         Files.writeString(bad, "t,x,y,yaw\n0.0,0,0,0\n0.1,0,0,nan\n");
         InputException e = assertThrows(InputException.class,
-                () -> TrajectoryEvaluator.of(Convention.LESSON).evaluate(ref, bad));
+                () -> TrajectoryEvaluator.withDefaults().evaluate(ref, bad));
         assertEquals(bad.toString(), e.source());
         assertEquals(3, e.line());
         assertEquals("yaw", e.column());
@@ -188,6 +184,44 @@ class TrajectoryEvaluatorTest {
         double[] two = {0, 1};
         assertThrows(IllegalArgumentException.class, () -> Poses.planar("p", three, three, two, three));
         assertThrows(IllegalArgumentException.class, () -> Poses.planar(" ", three, three, three, three));
+    }
+
+    @Test
+    void settingsAreTheCommandLinesAndRunYamlsNestedOrFlat(@TempDir Path tmp) throws IOException {
+        // the same RPE horizon written flat, nested (as in run.yaml) and with a number value
+        double[][] ref = curvedPlanarPath(300, new Random(8), 0.0, 0.0);
+        double[][] est = curvedPlanarPath(300, new Random(9), 0.03, 0.2);
+        Poses truth = Poses.planar("ref", ref[0], ref[1], ref[2], ref[3]);
+        Poses run = Poses.planar("est", est[0], est[1], est[2], est[3]);
+        EvaluationReport flat = TrajectoryEvaluator.of(Map.of("rpe_delta", "5", "rpe_unit", "frames"))
+                .evaluate(truth, run);
+        EvaluationReport nested = TrajectoryEvaluator.of(Map.of("rpe", Map.of("delta", 5, "unit", "frames")))
+                .evaluate(truth, run);
+        assertEquals(flat.rpe(), nested.rpe());
+        assertEquals("frames", flat.rpe().unit());
+        assertEquals(5.0, flat.rpe().delta());
+    }
+
+    @Test
+    void badSettingsAreRefusedNamingTheKey() {
+        InputException unknown = assertThrows(InputException.class,
+                () -> TrajectoryEvaluator.of(Map.of("alignmnet", "se3")));
+        assertEquals(TrajectoryEvaluator.SETTINGS_SOURCE, unknown.source());
+        assertEquals("alignmnet", unknown.column());
+        assertEquals(InputProblem.INVALID_CONFIGURATION, unknown.problem());
+        InputException outOfRange = assertThrows(InputException.class,
+                () -> TrajectoryEvaluator.of(Map.of("max_diff_s", -1)));
+        assertEquals("max_diff_s", outOfRange.column());
+    }
+
+    @Test
+    void readingSettingsAreRefusedForArrays() {
+        double[][] ref = curvedPlanarPath(20, new Random(1), 0.0, 0.0);
+        Poses p = Poses.planar("ref", ref[0], ref[1], ref[2], ref[3]);
+        InputException e = assertThrows(InputException.class,
+                () -> TrajectoryEvaluator.of(Map.of("sort", true)).evaluate(p, p));
+        assertEquals("sort", e.column());
+        assertEquals(InputProblem.INVALID_CONFIGURATION, e.problem());
     }
 
     /** t, x, y, yaw of a seeded curved path (10 Hz), optionally offset in position noise and heading. */

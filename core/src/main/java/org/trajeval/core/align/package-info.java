@@ -1,5 +1,4 @@
 /**
- * Alignment models (EJML stays in this package). Internal, except the option type
- * {@link org.trajeval.core.align.AlignmentModel} (public API, see {@link org.trajeval.api}).
+ * Alignment models (EJML stays in this package). Internal: may change in any release; the public API is {@link org.trajeval.api}.
  */
 package org.trajeval.core.align;

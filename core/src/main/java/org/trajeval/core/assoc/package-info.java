@@ -1,6 +1,4 @@
 /**
- * Time association of two trajectories. Internal, except the option types
- * {@link org.trajeval.core.assoc.AssociationMethod} and {@link org.trajeval.core.assoc.OverlapPolicy}
- * (public API, see {@link org.trajeval.api}).
+ * Time association of two trajectories. Internal: may change in any release; the public API is {@link org.trajeval.api}.
  */
 package org.trajeval.core.assoc;

@@ -72,7 +72,7 @@ class EvaluationReportSchemaTest {
         double[] x = {0, 1, 2, 3, 4};
         double[] y = {0, 0, 1, 1, 2};
         double[] yaw = {0, 0.1, 0.2, 0.3, 0.4};
-        EvaluationReport report = org.trajeval.api.TrajectoryEvaluator.of(Convention.LESSON).evaluate(
+        EvaluationReport report = org.trajeval.api.TrajectoryEvaluator.withDefaults().evaluate(
                 org.trajeval.api.Poses.planar("truth", t, x, y, yaw), org.trajeval.api.Poses.planar("run", t, y, x, yaw));
         String text = ReportJson.toJson(report);
         List<String> problems = schema.check(json.readTree(text));
