@@ -34,7 +34,8 @@ final class MemoryBudget {
         if (need > maxHeapBytes) {
             throw new InputException(estimate.toString(), 0, null, InputProblem.TOO_LARGE, String.format(Locale.ROOT,
                     "the pair holds about %,d poses and needs about %s of memory, but the JVM may use %s;"
-                            + " raise the heap (e.g. TRAJEVAL_OPTS=-Xmx%dg) or split the run into shorter spans",
+                            + " raise the heap (e.g. TRAJEVAL_OPTS=-Xmx%dg; with the jar: java -Xmx%4$dg -jar ...)"
+                            + " or split the run into shorter spans",
                     poses, size(need), size(maxHeapBytes), (long) Math.ceil(need * 1.2 / 1073741824.0)), null);
         }
     }

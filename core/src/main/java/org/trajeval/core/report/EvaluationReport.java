@@ -63,6 +63,12 @@ public record EvaluationReport(
     /** Version of the report schema; bumped on any incompatible change. */
     public static final int SCHEMA_VERSION = 1;
 
+    /** @return this report with other inputs (trajectories given as arrays through the Java API) */
+    public EvaluationReport withInputs(Inputs other) {
+        return new EvaluationReport(schema, schemaVersion, version, convention, other, association, alignment, ate,
+                rpe, drift);
+    }
+
     /**
      * @param reference the reference (ground truth) input
      * @param estimate the estimate input
@@ -290,7 +296,11 @@ public record EvaluationReport(
             @JsonProperty("min") Double min, @JsonProperty("max") Double max,
             @JsonProperty("sse") Double sse, @JsonProperty("n") long n) {
 
-        /** @return the report form of the statistics (nulls for n = 0) */
+        /**
+         * Internal (not part of the public API, see {@link org.trajeval.api}): used by the evaluator.
+         *
+         * @return the report form of the statistics (nulls for n = 0)
+         */
         public static Stats of(org.trajeval.core.stats.ErrorStatistics s) {
             if (s.n() == 0) {
                 return new Stats(null, null, null, null, null, null, null, 0);

@@ -61,4 +61,22 @@ class EvaluationReportSchemaTest {
             assertEquals(text, ReportJson.toJson(ReportJson.parseEvaluation(text)), "round trip");
         }
     }
+
+    @Test
+    void reportOfArraysGivenThroughTheJavaApiConformsToTheSchema() throws IOException {
+        Path schemaFile = Paths.get(System.getProperty("trajeval.projectDir", "."), "..", "docs",
+                "report.schema.json");
+        ObjectMapper json = new ObjectMapper();
+        MiniJsonSchema schema = new MiniJsonSchema(json.readTree(schemaFile.toFile()));
+        double[] t = {0, 1, 2, 3, 4};
+        double[] x = {0, 1, 2, 3, 4};
+        double[] y = {0, 0, 1, 1, 2};
+        double[] yaw = {0, 0.1, 0.2, 0.3, 0.4};
+        EvaluationReport report = org.trajeval.api.TrajectoryEvaluator.withDefaults().evaluate(
+                org.trajeval.api.Poses.planar("truth", t, x, y, yaw), org.trajeval.api.Poses.planar("run", t, y, x, yaw));
+        String text = ReportJson.toJson(report);
+        List<String> problems = schema.check(json.readTree(text));
+        assertTrue(problems.isEmpty(), problems.toString());
+        assertEquals(text, ReportJson.toJson(ReportJson.parseEvaluation(text)), "round trip");
+    }
 }

@@ -1,0 +1,4 @@
+/**
+ * Time association of two trajectories. Internal: may change in any release; the public API is {@link org.trajeval.api}.
+ */
+package org.trajeval.core.assoc;

@@ -1,0 +1,4 @@
+/**
+ * Rotations, angles and rigid transforms. Internal: may change in any release; the public API is {@link org.trajeval.api}.
+ */
+package org.trajeval.core.geom;

@@ -1,0 +1,4 @@
+/**
+ * Benchmark suites: manifests, splits, seeds, scores. Internal: may change in any release; the public API is {@link org.trajeval.api}.
+ */
+package org.trajeval.core.protocol;

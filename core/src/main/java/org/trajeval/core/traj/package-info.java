@@ -1,0 +1,4 @@
+/**
+ * Column-wise trajectories. Internal: may change in any release; the public API is {@link org.trajeval.api}.
+ */
+package org.trajeval.core.traj;
