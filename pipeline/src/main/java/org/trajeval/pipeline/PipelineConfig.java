@@ -45,22 +45,25 @@ public record PipelineConfig(String root, int workers, int queueCapacity, String
     }
 
     /**
-     * @param bootstrapServers host:port list of the cluster (ignored with --embedded-broker)
+     * @param bootstrapServers host:port list of the cluster
      * @param groupId consumer group shared by every instance
      * @param inputTopic topic of run events
      * @param outputTopic topic of report events
      * @param deadLetterTopic topic of refused events with their reason
-     * @param partitions partitions of the topics when the service creates them
+     * @param partitions partitions of the topics when the service creates (or re-creates) them
      * @param bundleBase folder that bundle locations in events are relative to (and must stay in)
      * @param sessionTimeoutMs consumer session timeout (ms): how soon a dead instance's partitions move
-     * @param transactionTimeoutMs producer transaction timeout (ms)
-     * @param instanceId this instance's id (transactional id suffix); empty: host name + process id
-     * @param embeddedBrokerDir data folder of --embedded-broker; empty: ROOT/kafka-data
-     * @param embeddedBrokerPort port of --embedded-broker; 0: a free one
+     * @param transactionTimeoutMs producer transaction timeout (ms): the longest broker outage a
+     *     transaction rides out; capped by the broker's {@code transaction.max.timeout.ms} (15 min by default)
+     * @param instanceId this instance's id (transactional id suffix); empty: the id persisted in
+     *     ROOT/kafka-instances/ (one slot per running instance sharing the root)
+     * @param unhealthyAfterS how long the broker may be unreachable, or commits fail, before
+     *     /health answers 503 (s)
+     * @param startupTimeoutS how long start-up waits for the broker before exiting with code 5 (s); 0: forever
      */
     public record Kafka(String bootstrapServers, String groupId, String inputTopic, String outputTopic,
             String deadLetterTopic, int partitions, String bundleBase, int sessionTimeoutMs, int transactionTimeoutMs,
-            String instanceId, String embeddedBrokerDir, int embeddedBrokerPort) {
+            String instanceId, double unhealthyAfterS, double startupTimeoutS) {
     }
 
     /** @return the defaults */
@@ -70,7 +73,7 @@ public record PipelineConfig(String root, int workers, int queueCapacity, String
                         BundleLimits.DEFAULTS.maxZipEntries(), BundleLimits.DEFAULTS.maxCompressionRatio()),
                 new Http(true, "127.0.0.1", 9464),
                 new Kafka("127.0.0.1:9092", "trajeval-pipeline", "trajeval.runs", "trajeval.reports",
-                        "trajeval.runs.dlq", 3, "", 10_000, 30_000, "", "", 0));
+                        "trajeval.runs.dlq", 3, "", 10_000, 300_000, "", 60, 0));
     }
 
     /** @return the root folder */
