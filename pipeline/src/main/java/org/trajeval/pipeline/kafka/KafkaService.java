@@ -322,6 +322,11 @@ public final class KafkaService {
 
     /** Publishes every report in the ledger again, in transactions of {@link #REPUBLISH_CHUNK}. */
     private void republishAll(String topicId) {
+        // the broker that lost the topic may have lost this producer's id too: start afresh
+        closeProducer();
+        if (!buildProducer()) {
+            return;
+        }
         List<LedgerEntry> entries = republisher.entriesSince(Instant.EPOCH);
         LOG.warn("re-publishing {} report events from the ledger to {}", entries.size(), settings.outputTopic());
         int sent = 0;

@@ -37,6 +37,7 @@ public final class TopicKeeper {
     private final KafkaSettings settings;
     private final String bootstrap;
     private final Path idFile;
+    private String warnedAbout;
 
     /**
      * @param settings topics and partitions
@@ -65,6 +66,10 @@ public final class TopicKeeper {
             return Optional.empty();
         }
         if (!known.equals(id)) {
+            if (id.equals(warnedAbout)) {
+                return Optional.of(id);
+            }
+            warnedAbout = id;
             LOG.warn("topic {} on {} is not the one the service published to (topic id {} before, {} now): "
                     + "every report in the ledger will be published again", settings.outputTopic(), bootstrap, known, id);
             return Optional.of(id);

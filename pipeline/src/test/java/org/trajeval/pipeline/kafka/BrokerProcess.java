@@ -51,6 +51,11 @@ public final class BrokerProcess implements AutoCloseable {
         return b;
     }
 
+    /** @return a broker with its ports picked, not started yet ({@link #restart()} starts it) */
+    public static BrokerProcess prepare(Path data, Path log, Path config) throws IOException {
+        return new BrokerProcess(data, log, config);
+    }
+
     /** @return host:port of the CLIENT listener */
     public String bootstrapServers() {
         return "127.0.0.1:" + port;
