@@ -32,7 +32,7 @@ import picocli.CommandLine.Option;
 @Command(name = "trajeval-pipeline", mixinStandardHelpOptions = true, versionProvider = PipelineCommand.VersionProvider.class,
         description = "Turns finished robot runs into metric reports, from a folder or from Kafka.",
         subcommands = {PipelineCommand.Watch.class, PipelineCommand.KafkaCmd.class, PipelineCommand.Send.class,
-            PipelineCommand.Tail.class, PipelineCommand.Republish.class},
+            PipelineCommand.Tail.class, PipelineCommand.Republish.class, PipelineCommand.ConfigCmd.class},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success (watch --drain: every bundle succeeded)", "1:internal error",
             "2:bad configuration or usage", "4:watch --drain: some bundles were put in failed/",
@@ -244,7 +244,7 @@ public final class PipelineCommand implements Runnable {
                 set.put("kafka.startup_timeout_s", startupTimeout.toString());
             }
             PipelineConfig c = load(parent.env);
-            return KafkaMode.run(c, parent.scorers.apply(c), KafkaClients.of(c.kafka()));
+            return KafkaMode.run(c, parent.scorers.apply(c), KafkaClients.of(c.kafka(), parent.env));
         }
     }
 
@@ -268,7 +268,7 @@ public final class PipelineCommand implements Runnable {
         public Integer call() {
             PipelineConfig c = load(parent.env);
             String t = topic == null ? c.kafka().inputTopic() : topic;
-            int n = KafkaMode.send(KafkaClients.of(c.kafka()), t, files);
+            int n = KafkaMode.send(KafkaClients.of(c.kafka(), parent.env), t, files);
             spec.commandLine().getOut().println("sent " + n + " event(s) to " + t);
             spec.commandLine().getOut().flush();
             return 0;
@@ -294,7 +294,7 @@ public final class PipelineCommand implements Runnable {
         @Override
         public Integer call() {
             PipelineConfig c = load(parent.env);
-            KafkaMode.tail(KafkaClients.of(c.kafka()), topic == null ? c.kafka().outputTopic() : topic, seconds,
+            KafkaMode.tail(KafkaClients.of(c.kafka(), parent.env), topic == null ? c.kafka().outputTopic() : topic, seconds,
                     spec.commandLine().getOut());
             return 0;
         }
@@ -331,9 +331,37 @@ public final class PipelineCommand implements Runnable {
                 throw new CommandLine.ParameterException(spec.commandLine(),
                         "--since must be an ISO-8601 instant such as 2026-11-23T08:00:00Z, or 'all', found \"" + since + "\"");
             }
-            int n = KafkaMode.republish(c, KafkaClients.of(c.kafka()), from);
+            int n = KafkaMode.republish(c, KafkaClients.of(c.kafka(), parent.env), from);
             spec.commandLine().getOut().println("re-published " + n + " report event(s) to " + c.kafka().outputTopic());
             spec.commandLine().getOut().flush();
+            return 0;
+        }
+    }
+
+    /** {@code config --show}: the effective configuration, secrets masked. */
+    @Command(name = "config", mixinStandardHelpOptions = true,
+            description = "Prints the effective configuration (defaults, file, environment, options) and the Kafka "
+                    + "client settings every client gets, with secrets masked.")
+    static final class ConfigCmd extends Common implements Callable<Integer> {
+        @CommandLine.ParentCommand
+        PipelineCommand parent;
+
+        @CommandLine.Spec
+        CommandLine.Model.CommandSpec spec;
+
+        @Option(names = "--show", required = true, description = "Print the effective configuration.")
+        boolean show;
+
+        @Override
+        public Integer call() {
+            PipelineConfig c = load(parent.env);
+            PrintWriter out = spec.commandLine().getOut();
+            out.print(ConfigLoader.toYaml(c));
+            out.println("# Kafka client settings applied to every client (secrets masked):");
+            out.println("bootstrap.servers=" + c.kafka().bootstrapServers());
+            org.trajeval.pipeline.kafka.ClientSettings.of(c.kafka(), parent.env).masked()
+                    .forEach((k, v) -> out.println(k + "=" + v));
+            out.flush();
             return 0;
         }
     }

@@ -60,10 +60,31 @@ public record PipelineConfig(String root, int workers, int queueCapacity, String
      * @param unhealthyAfterS how long the broker may be unreachable, or commits fail, before
      *     /health answers 503 (s)
      * @param startupTimeoutS how long start-up waits for the broker before exiting with code 5 (s); 0: forever
+     * @param clientProperties a Kafka client properties file applied to every Kafka client (what
+     *     Kafka's tools take with --command-config; config providers work); empty: none
+     * @param security typed shortcuts for the common secured connections
      */
     public record Kafka(String bootstrapServers, String groupId, String inputTopic, String outputTopic,
             String deadLetterTopic, int partitions, String bundleBase, int sessionTimeoutMs, int transactionTimeoutMs,
-            String instanceId, double unhealthyAfterS, double startupTimeoutS) {
+            String instanceId, double unhealthyAfterS, double startupTimeoutS, String clientProperties,
+            Security security) {
+    }
+
+    /**
+     * Shortcuts for TLS and SASL; each secret is a reference, {@code env:VARIABLE} or
+     * {@code file:PATH} (the whole file, trailing newline dropped), never the secret itself.
+     *
+     * @param protocol security.protocol: PLAINTEXT, SSL, SASL_PLAINTEXT or SASL_SSL; empty: as the properties file says
+     * @param saslMechanism PLAIN, SCRAM-SHA-256 or SCRAM-SHA-512; empty: none
+     * @param saslUsername SASL user name
+     * @param saslPassword reference to the SASL password
+     * @param truststore truststore file (PKCS12, JKS or PEM, by extension): the CA that signed the broker's certificate
+     * @param truststorePassword reference to the truststore's password (empty for PEM)
+     * @param keystore keystore file for mutual TLS: this client's certificate and key
+     * @param keystorePassword reference to the keystore's (and its key's) password
+     */
+    public record Security(String protocol, String saslMechanism, String saslUsername, String saslPassword,
+            String truststore, String truststorePassword, String keystore, String keystorePassword) {
     }
 
     /** @return the defaults */
@@ -73,7 +94,8 @@ public record PipelineConfig(String root, int workers, int queueCapacity, String
                         BundleLimits.DEFAULTS.maxZipEntries(), BundleLimits.DEFAULTS.maxCompressionRatio()),
                 new Http(true, "127.0.0.1", 9464),
                 new Kafka("127.0.0.1:9092", "trajeval-pipeline", "trajeval.runs", "trajeval.reports",
-                        "trajeval.runs.dlq", 3, "", 10_000, 300_000, "", 60, 0));
+                        "trajeval.runs.dlq", 3, "", 10_000, 300_000, "", 60, 0, "",
+                        new Security("", "", "", "", "", "", "", "")));
     }
 
     /** @return the root folder */

@@ -32,7 +32,7 @@ final class BrokerMessages {
         } else {
             what = "authentication failed (" + who + ")";
         }
-        return "Kafka broker " + clients.bootstrapServers() + " refused the connection: " + what + " ["
-                + shortReason(cause) + "]";
+        return clients.scrub("Kafka broker " + clients.bootstrapServers() + " refused the connection: " + what + " ["
+                + shortReason(cause) + "]");
     }
 }

@@ -21,20 +21,30 @@ public final class KafkaClients {
     static final int ADMIN_TIMEOUT_MS = 5_000;
 
     private final String bootstrapServers;
+    private final ClientSettings client;
     private final Map<String, String> common;
 
     /**
      * @param bootstrapServers host:port list
-     * @param common client settings applied to every client (security protocol, SASL, TLS ...)
+     * @param client client settings applied to every client (security protocol, SASL, TLS ...)
      */
-    public KafkaClients(String bootstrapServers, Map<String, String> common) {
+    public KafkaClients(String bootstrapServers, ClientSettings client) {
         this.bootstrapServers = bootstrapServers;
-        this.common = Map.copyOf(common);
+        this.client = client;
+        this.common = client.settings();
     }
 
-    /** @return the clients of a configuration */
-    public static KafkaClients of(PipelineConfig.Kafka k) {
-        return new KafkaClients(k.bootstrapServers(), Map.of());
+    /**
+     * @return the clients of a configuration
+     * @throws org.trajeval.core.InputException on bad client settings (see {@link ClientSettings#of})
+     */
+    public static KafkaClients of(PipelineConfig.Kafka k, Map<String, String> env) {
+        return new KafkaClients(k.bootstrapServers(), ClientSettings.of(k, env));
+    }
+
+    /** @return {@code text} with every known secret masked */
+    public String scrub(String text) {
+        return client.scrub(text);
     }
 
     /** @return the bootstrap address (for messages) */

@@ -26,7 +26,8 @@ import java.util.regex.Pattern;
  * {@code gradle :pipeline:reliability [-Pargs="RUNS [FAULT...]"]}; under nice, ~15 min.
  */
 public final class BrokerFaultTable {
-    private static final Pattern COMMIT_AGE = Pattern.compile("trajeval_pipeline_last_commit_age_seconds\\S* (\\S+)");
+    private static final Pattern COMMIT_AGE = Pattern.compile(
+            "(?m)^trajeval_pipeline_last_commit_age_seconds(?:\\{[^}]*\\})? (\\S+)$");
 
     private final Path dir;
     private final int runs;

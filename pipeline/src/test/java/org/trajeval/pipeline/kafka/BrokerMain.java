@@ -18,7 +18,8 @@ import org.apache.kafka.clients.admin.NewTopic;
  * {@code READY host:port} once it serves. Arguments: {@code --port P} (CLIENT, default 9092),
  * {@code --internal-port P}, {@code --controller-port P} (default: free ports), {@code --data DIR}
  * (default: a temporary folder), {@code --topics a,b,c} (3 partitions each), {@code --config FILE}
- * (broker properties added: listener security, TLS stores, SASL).
+ * (broker properties added: listener security, TLS stores, SASL), {@code --listener NAME=PORT}
+ * (an extra client listener, repeatable).
  */
 public final class BrokerMain {
     private BrokerMain() {
@@ -32,6 +33,7 @@ public final class BrokerMain {
         Path data = null;
         List<String> topics = List.of();
         Properties extra = new Properties();
+        List<String> listeners = new ArrayList<>();
         for (int i = 0; i < args.length; i += 2) {
             String v = args[i + 1];
             switch (args[i]) {
@@ -39,6 +41,7 @@ public final class BrokerMain {
                 case "--internal-port" -> internal = Integer.parseInt(v);
                 case "--controller-port" -> controller = Integer.parseInt(v);
                 case "--data" -> data = Path.of(v);
+                case "--listener" -> listeners.add(v);
                 case "--topics" -> topics = List.of(v.split(","));
                 case "--config" -> {
                     try (InputStream in = Files.newInputStream(Path.of(v))) {
@@ -48,8 +51,20 @@ public final class BrokerMain {
                 default -> throw new IllegalArgumentException("unknown option " + args[i]);
             }
         }
-        EmbeddedBroker broker = EmbeddedBroker.start(data, port, internal == 0 ? EmbeddedBroker.freePort() : internal,
-                controller == 0 ? EmbeddedBroker.freePort() : controller, extra);
+        int p0 = port;
+        int i0 = internal == 0 ? EmbeddedBroker.freePort() : internal;
+        int c0 = controller == 0 ? EmbeddedBroker.freePort() : controller;
+        if (!listeners.isEmpty()) {
+            // extra client listeners NAME=PORT; their protocols come from --config's listener.security.protocol.map
+            StringBuilder l = new StringBuilder("CLIENT://127.0.0.1:" + p0 + ",INTERNAL://127.0.0.1:" + i0);
+            for (String nl : listeners) {
+                String[] f = nl.split("=");
+                l.append(',').append(f[0]).append("://127.0.0.1:").append(f[1]);
+            }
+            extra.setProperty("advertised.listeners", l.toString());
+            extra.setProperty("listeners", l + ",CONTROLLER://127.0.0.1:" + c0);
+        }
+        EmbeddedBroker broker = EmbeddedBroker.start(data, p0, i0, c0, extra);
         CountDownLatch stop = new CountDownLatch(1);
         Runtime.getRuntime().addShutdownHook(new Thread(() -> {
             broker.close();

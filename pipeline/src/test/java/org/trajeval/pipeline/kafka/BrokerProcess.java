@@ -26,13 +26,17 @@ public final class BrokerProcess implements AutoCloseable {
     private final int port;
     private final int internalPort;
     private final int controllerPort;
+    private final java.util.Map<String, Integer> listeners = new java.util.LinkedHashMap<>();
     private Process process;
     private int starts;
 
-    private BrokerProcess(Path data, Path log, Path config) throws IOException {
+    private BrokerProcess(Path data, Path log, Path config, List<String> extraListeners) throws IOException {
         this.data = data;
         this.log = log;
         this.config = config;
+        for (String l : extraListeners) {
+            listeners.put(l, EmbeddedBroker.freePort());
+        }
         this.port = EmbeddedBroker.freePort();
         this.internalPort = EmbeddedBroker.freePort();
         this.controllerPort = EmbeddedBroker.freePort();
@@ -46,14 +50,25 @@ public final class BrokerProcess implements AutoCloseable {
      * @param config broker properties to add (listener security ...), or null
      */
     public static BrokerProcess start(Path data, Path log, Path config) throws IOException, InterruptedException {
-        BrokerProcess b = new BrokerProcess(data, log, config);
+        return start(data, log, config, List.of());
+    }
+
+    /** As {@link #start(Path, Path, Path)}, with extra client listeners (their protocols set in {@code config}). */
+    public static BrokerProcess start(Path data, Path log, Path config, List<String> extraListeners)
+            throws IOException, InterruptedException {
+        BrokerProcess b = new BrokerProcess(data, log, config, extraListeners);
         b.restart();
         return b;
     }
 
+    /** @return host:port of an extra listener */
+    public String bootstrapServers(String listener) {
+        return "127.0.0.1:" + listeners.get(listener);
+    }
+
     /** @return a broker with its ports picked, not started yet ({@link #restart()} starts it) */
     public static BrokerProcess prepare(Path data, Path log, Path config) throws IOException {
-        return new BrokerProcess(data, log, config);
+        return new BrokerProcess(data, log, config, List.of());
     }
 
     /** @return host:port of the CLIENT listener */
@@ -76,6 +91,7 @@ public final class BrokerProcess implements AutoCloseable {
         if (config != null) {
             cmd.addAll(List.of("--config", config.toString()));
         }
+        listeners.forEach((name, p) -> cmd.addAll(List.of("--listener", name + "=" + p)));
         int readyBefore = countReady();
         process = new ProcessBuilder(cmd).redirectErrorStream(true)
                 .redirectOutput(ProcessBuilder.Redirect.appendTo(log.toFile())).start();

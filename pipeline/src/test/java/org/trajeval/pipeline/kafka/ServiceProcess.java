@@ -34,6 +34,12 @@ final class ServiceProcess implements AutoCloseable {
 
     /** Starts {@code kafka --root ROOT --http-port 0 --bootstrap-servers BS --workers 2 ARGS...}. */
     static ServiceProcess start(Path root, String bootstrap, Path log, List<String> args) throws IOException {
+        return start(root, bootstrap, log, args, java.util.Map.of());
+    }
+
+    /** As {@link #start(Path, String, Path, List)}, with environment variables added. */
+    static ServiceProcess start(Path root, String bootstrap, Path log, List<String> args, java.util.Map<String, String> env)
+            throws IOException {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Xmx256m", "-XX:TieredStopAtLevel=1",
                 "-Dlogback.configurationFile=" + Path.of(System.getProperty("trajeval.projectDir", "."))
@@ -42,8 +48,10 @@ final class ServiceProcess implements AutoCloseable {
                 PipelineCommand.class.getName(), "kafka", "--root", root.toString(), "--http-port", "0",
                 "--bootstrap-servers", bootstrap, "--workers", "2"));
         cmd.addAll(args);
-        Process p = new ProcessBuilder(cmd).redirectErrorStream(true)
-                .redirectOutput(ProcessBuilder.Redirect.appendTo(log.toFile())).start();
+        ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true)
+                .redirectOutput(ProcessBuilder.Redirect.appendTo(log.toFile()));
+        pb.environment().putAll(env);
+        Process p = pb.start();
         return new ServiceProcess(p, log);
     }
 
@@ -72,11 +80,14 @@ final class ServiceProcess implements AutoCloseable {
     private String get(String path) {
         try {
             if (httpPort == 0) {
+                // the log may hold an earlier instance's lines: this instance's port is the last one logged
                 Matcher m = HTTP.matcher(log());
-                if (!m.find()) {
+                while (m.find()) {
+                    httpPort = Integer.parseInt(m.group(1));
+                }
+                if (httpPort == 0) {
                     return "no answer: the HTTP port is not logged yet";
                 }
-                httpPort = Integer.parseInt(m.group(1));
             }
             HttpResponse<String> r = HttpClient.newHttpClient().send(HttpRequest.newBuilder(
                     URI.create("http://127.0.0.1:" + httpPort + path)).timeout(Duration.ofSeconds(2)).build(),
