@@ -122,6 +122,9 @@ class KafkaSecurityTest {
         cl.setErr(new PrintWriter(out));
         int code = cl.execute(args.toArray(String[]::new));
         outputs.add(out.toString());
+        if (code != 0) {
+            System.out.println("exit " + code + ": " + out.toString().trim()); // the README's table of refusals
+        }
         return code;
     }
 
