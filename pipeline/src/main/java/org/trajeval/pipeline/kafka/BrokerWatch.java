@@ -40,6 +40,7 @@ public final class BrokerWatch implements AutoCloseable {
     private final LongSupplier runsHeld;
     private final CountDownLatch stopped = new CountDownLatch(1);
     private final AtomicReference<String> republishTo = new AtomicReference<>();
+    private final Object republishLock = new Object();
     private volatile Admin admin;
     private volatile Instant unreachableSince;
     private volatile String unreachableReason = "";
@@ -120,7 +121,9 @@ public final class BrokerWatch implements AutoCloseable {
         try {
             Admin a = admin();
             a.describeCluster().nodes().get(KafkaClients.ADMIN_TIMEOUT_MS + 1000L, TimeUnit.MILLISECONDS);
-            keeper.check(a).ifPresent(republishTo::set);
+            synchronized (republishLock) {
+                keeper.check(a).ifPresent(republishTo::set);
+            }
             problem = null;
         } catch (ExecutionException e) {
             Throwable cause = e.getCause();
@@ -197,8 +200,10 @@ public final class BrokerWatch implements AutoCloseable {
 
     /** Notes that every report was published again to the topic with this id. */
     public void republished(String topicId) {
-        keeper.remember(topicId);
-        republishTo.compareAndSet(topicId, null);
+        synchronized (republishLock) { // a check in between would see the old id and ask again
+            keeper.remember(topicId);
+            republishTo.compareAndSet(topicId, null);
+        }
     }
 
     /** @return what /health answers */

@@ -37,6 +37,7 @@ import org.apache.kafka.common.errors.AuthorizationException;
 import org.apache.kafka.common.errors.InvalidPidMappingException;
 import org.apache.kafka.common.errors.InvalidProducerEpochException;
 import org.apache.kafka.common.errors.InvalidTxnStateException;
+import org.apache.kafka.common.errors.InvalidTxnTimeoutException;
 import org.apache.kafka.common.errors.OutOfOrderSequenceException;
 import org.apache.kafka.common.errors.ProducerFencedException;
 import org.apache.kafka.common.errors.TimeoutException;
@@ -201,6 +202,13 @@ public final class KafkaService {
                 throw refused(e);
             } catch (KafkaException | IllegalStateException e) {
                 close(p);
+                for (Throwable t = e; t != null; t = t.getCause()) {
+                    if (t instanceof InvalidTxnTimeoutException) {
+                        throw new IllegalArgumentException("kafka.transaction_timeout_ms (" + settings.transactionTimeoutMs()
+                                + " ms) is longer than the broker " + clients.bootstrapServers() + " allows "
+                                + "(transaction.max.timeout.ms, 15 min by default): lower it");
+                    }
+                }
                 if (attempt == 0) {
                     LOG.warn("producer {} cannot start a transaction yet ({}); retrying", settings.transactionalId(),
                             BrokerMessages.shortReason(e));

@@ -96,8 +96,11 @@ public final class TopicKeeper {
             }
         }
         if (!missing.isEmpty()) {
-            create(admin, missing);
-            LOG.warn("topics {} were missing on {}: created with {} partitions", missing, bootstrap, settings.partitions());
+            List<String> created = create(admin, missing);
+            if (!created.isEmpty()) {
+                LOG.warn("topics {} were missing on {}: created with {} partitions", created, bootstrap,
+                        settings.partitions());
+            }
             if (output == null) {
                 output = admin.describeTopics(List.of(settings.outputTopic())).topicNameValues()
                         .get(settings.outputTopic()).get(KafkaClients.ADMIN_TIMEOUT_MS, TimeUnit.MILLISECONDS);
@@ -106,20 +109,25 @@ public final class TopicKeeper {
         return output.topicId().toString();
     }
 
-    private void create(Admin admin, List<String> names) throws ExecutionException, TimeoutException, InterruptedException {
+    /** @return the topics this call created (not those someone else created meanwhile) */
+    private List<String> create(Admin admin, List<String> names)
+            throws ExecutionException, TimeoutException, InterruptedException {
         List<NewTopic> topics = new ArrayList<>();
         for (String n : names) {
             topics.add(new NewTopic(n, Optional.of(settings.partitions()), Optional.empty()));
         }
-        for (KafkaFuture<Void> f : admin.createTopics(topics).values().values()) {
+        List<String> created = new ArrayList<>();
+        for (Map.Entry<String, KafkaFuture<Void>> f : admin.createTopics(topics).values().entrySet()) {
             try {
-                f.get(KafkaClients.ADMIN_TIMEOUT_MS, TimeUnit.MILLISECONDS);
+                f.getValue().get(KafkaClients.ADMIN_TIMEOUT_MS, TimeUnit.MILLISECONDS);
+                created.add(f.getKey());
             } catch (ExecutionException e) {
                 if (!(e.getCause() instanceof TopicExistsException)) {
                     throw e;
                 }
             }
         }
+        return created;
     }
 
     /** @return the remembered output topic id, or null */
