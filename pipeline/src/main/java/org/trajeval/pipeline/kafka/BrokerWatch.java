@@ -202,7 +202,9 @@ public final class BrokerWatch implements AutoCloseable {
     public void republished(String topicId) {
         synchronized (republishLock) { // a check in between would see the old id and ask again
             keeper.remember(topicId);
-            republishTo.compareAndSet(topicId, null);
+            if (topicId.equals(republishTo.get())) { // equals, not compareAndSet: each check makes a new String
+                republishTo.set(null);
+            }
         }
     }
 

@@ -25,11 +25,13 @@ final class ServiceProcess implements AutoCloseable {
 
     private final Process process;
     private final Path log;
+    private final long logStart;
     private int httpPort;
 
-    private ServiceProcess(Process process, Path log) {
+    private ServiceProcess(Process process, Path log, long logStart) {
         this.process = process;
         this.log = log;
+        this.logStart = logStart;
     }
 
     /** Starts {@code kafka --root ROOT --http-port 0 --bootstrap-servers BS --workers 2 ARGS...}. */
@@ -48,11 +50,12 @@ final class ServiceProcess implements AutoCloseable {
                 PipelineCommand.class.getName(), "kafka", "--root", root.toString(), "--http-port", "0",
                 "--bootstrap-servers", bootstrap, "--workers", "2"));
         cmd.addAll(args);
+        long logStart = Files.exists(log) ? Files.size(log) : 0;
         ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true)
                 .redirectOutput(ProcessBuilder.Redirect.appendTo(log.toFile()));
         pb.environment().putAll(env);
         Process p = pb.start();
-        return new ServiceProcess(p, log);
+        return new ServiceProcess(p, log, logStart);
     }
 
     boolean isAlive() {
@@ -80,9 +83,9 @@ final class ServiceProcess implements AutoCloseable {
     private String get(String path) {
         try {
             if (httpPort == 0) {
-                // the log may hold an earlier instance's lines: this instance's port is the last one logged
-                Matcher m = HTTP.matcher(log());
-                while (m.find()) {
+                // the log may hold an earlier instance's lines: only this instance's part counts
+                Matcher m = HTTP.matcher(log().substring((int) Math.min(logStart, log().length())));
+                if (m.find()) {
                     httpPort = Integer.parseInt(m.group(1));
                 }
                 if (httpPort == 0) {
