@@ -138,4 +138,13 @@ public final class ConfigLoader {
         return new InputException(origin, 0, key, InputProblem.INVALID_CONFIGURATION,
                 "unknown configuration key '" + key + "'", key);
     }
+
+    /** @return the configuration as YAML, in the file's own key names (for {@code config --show}) */
+    public static String toYaml(PipelineConfig c) {
+        try {
+            return YAML.writeValueAsString(c);
+        } catch (JsonProcessingException e) {
+            throw new IllegalStateException("could not write the configuration as YAML", e);
+        }
+    }
 }

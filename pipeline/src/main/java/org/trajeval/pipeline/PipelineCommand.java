@@ -15,6 +15,9 @@ import org.trajeval.pipeline.bundle.BundleOpener;
 import org.trajeval.pipeline.dir.DirectoryLayout;
 import org.trajeval.pipeline.dir.DirectoryService;
 import org.trajeval.pipeline.dir.DrainSummary;
+import org.trajeval.pipeline.kafka.BrokerFailure;
+import org.trajeval.pipeline.kafka.KafkaClients;
+import org.trajeval.pipeline.kafka.KafkaMode;
 import org.trajeval.pipeline.ledger.Ledger;
 import org.trajeval.pipeline.metrics.HttpEndpoint;
 import org.trajeval.pipeline.metrics.PipelineMetrics;
@@ -24,15 +27,17 @@ import picocli.CommandLine.Option;
 
 /**
  * {@code trajeval-pipeline}: the pipeline service launcher ({@code watch} for the directory mode,
- * {@code kafka} for the Kafka mode, {@code broker} for a local single-node Kafka).
+ * {@code kafka} for the Kafka mode, {@code send}, {@code tail} and {@code republish} around it).
  */
 @Command(name = "trajeval-pipeline", mixinStandardHelpOptions = true, versionProvider = PipelineCommand.VersionProvider.class,
         description = "Turns finished robot runs into metric reports, from a folder or from Kafka.",
-        subcommands = {PipelineCommand.Watch.class, PipelineCommand.KafkaCmd.class, PipelineCommand.Broker.class,
-            PipelineCommand.Send.class, PipelineCommand.Tail.class},
+        subcommands = {PipelineCommand.Watch.class, PipelineCommand.KafkaCmd.class, PipelineCommand.Send.class,
+            PipelineCommand.Tail.class, PipelineCommand.Republish.class, PipelineCommand.ConfigCmd.class},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success (watch --drain: every bundle succeeded)", "1:internal error",
-            "2:bad configuration or usage", "4:watch --drain: some bundles were put in failed/"})
+            "2:bad configuration or usage", "4:watch --drain: some bundles were put in failed/",
+            "5:kafka: no broker answered within --startup-timeout (send, tail: within 60 s)",
+            "6:kafka: the broker refused this client (credentials, TLS certificate, permissions)"})
 public final class PipelineCommand implements Runnable {
     /** Exit code of {@code watch --drain} when some bundles failed. */
     public static final int SOME_FAILED = 4;
@@ -54,7 +59,7 @@ public final class PipelineCommand implements Runnable {
 
     @Override
     public void run() {
-        throw new CommandLine.ParameterException(spec.commandLine(), "a subcommand is required (watch, kafka, broker)");
+        throw new CommandLine.ParameterException(spec.commandLine(), "a subcommand is required (watch, kafka, send, tail, republish)");
     }
 
     /** Entry point of the launcher. */
@@ -67,6 +72,11 @@ public final class PipelineCommand implements Runnable {
         CommandLine cl = new CommandLine(new PipelineCommand(scorers, env));
         cl.setExecutionExceptionHandler((ex, c, parsed) -> {
             PrintWriter err = c.getErr();
+            if (ex instanceof BrokerFailure f) {
+                err.println("trajeval-pipeline: " + f.getMessage());
+                err.flush();
+                return f.kind().exitCode();
+            }
             if (ex instanceof InputException || ex instanceof IllegalArgumentException
                     || ex instanceof java.io.UncheckedIOException) {
                 err.println("trajeval-pipeline: " + ex.getMessage());
@@ -190,63 +200,65 @@ public final class PipelineCommand implements Runnable {
         }
     }
 
+    /** Options of every subcommand that talks to Kafka without running the service: configuration and broker. */
+    static class KafkaClientOptions {
+        @Option(names = "--config", paramLabel = "FILE", description = "YAML configuration file (its kafka.* keys apply).")
+        Path config;
+
+        @Option(names = "--bootstrap-servers", paramLabel = "HOST:PORT", description = "Kafka cluster (default: kafka.bootstrap_servers, 127.0.0.1:9092).")
+        String bootstrap;
+
+        @Option(names = "--set", paramLabel = "KEY=VALUE", description = "Override any key, e.g. kafka.output_topic=t.")
+        Map<String, String> set = new LinkedHashMap<>();
+
+        PipelineConfig load(Map<String, String> env) {
+            Map<String, String> o = new LinkedHashMap<>(set);
+            if (bootstrap != null) {
+                o.put("kafka.bootstrap_servers", bootstrap);
+            }
+            return ConfigLoader.load(config, env, o);
+        }
+    }
+
     /** {@code kafka}: the Kafka mode (Kafka classes are loaded only here). */
     @Command(name = "kafka", mixinStandardHelpOptions = true,
-            description = "Consumes run events from the input topic, writes reports, publishes report events.")
+            description = "Consumes run events from the input topic, writes reports, publishes report events. "
+                    + "Rides out broker outages; SIGTERM finishes the current transaction and exits 0.")
     static final class KafkaCmd extends Common implements Callable<Integer> {
         @CommandLine.ParentCommand
         PipelineCommand parent;
 
-        @Option(names = "--embedded-broker", description = "Start a single-node Kafka broker in this process (local runs).")
-        boolean embeddedBroker;
-
         @Option(names = "--bootstrap-servers", paramLabel = "HOST:PORT", description = "Kafka cluster to use.")
         String bootstrap;
 
-        @Override
-        public Integer call() {
-            if (bootstrap != null) {
-                set.put("kafka.bootstrap_servers", bootstrap);
-            }
-            PipelineConfig c = load(parent.env);
-            return org.trajeval.pipeline.kafka.KafkaMode.run(c, parent.scorers.apply(c), embeddedBroker);
-        }
-    }
-
-    /** {@code broker}: a single-node Kafka broker for local trials. */
-    @Command(name = "broker", mixinStandardHelpOptions = true,
-            description = "Runs a single-node Kafka broker (KRaft) on 127.0.0.1 until stopped, for local trials.")
-    static final class Broker implements Callable<Integer> {
-        @CommandLine.Spec
-        CommandLine.Model.CommandSpec spec;
-
-        @Option(names = "--port", paramLabel = "PORT", description = "Client port (default: ${DEFAULT-VALUE}).")
-        int port = 9092;
-
-        @Option(names = "--data", paramLabel = "DIR", description = "Data folder (default: a temporary folder).")
-        Path data;
-
-        @Option(names = "--topics", split = ",", paramLabel = "NAME", description = "Topics to create (3 partitions each).")
-        java.util.List<String> topics = java.util.List.of();
+        @Option(names = "--startup-timeout", paramLabel = "SECONDS",
+                description = "Exit with code 5 when no broker answers within this time (s; default: wait forever).")
+        Double startupTimeout;
 
         @Override
         public Integer call() throws InterruptedException {
-            return org.trajeval.pipeline.kafka.KafkaMode.runBroker(data, port, topics, spec.commandLine().getOut());
+            if (bootstrap != null) {
+                set.put("kafka.bootstrap_servers", bootstrap);
+            }
+            if (startupTimeout != null) {
+                set.put("kafka.startup_timeout_s", startupTimeout.toString());
+            }
+            PipelineConfig c = load(parent.env);
+            return KafkaMode.run(c, parent.scorers.apply(c), KafkaClients.of(c.kafka(), parent.env));
         }
     }
 
-    /** {@code send}: publishes run event files to the input topic (local trials). */
+    /** {@code send}: publishes run event files to the input topic. */
     @Command(name = "send", mixinStandardHelpOptions = true,
             description = "Publishes run events (a JSON file each, or .jsonl with one per line), keyed by robot_id.")
-    static final class Send implements Callable<Integer> {
+    static final class Send extends KafkaClientOptions implements Callable<Integer> {
+        @CommandLine.ParentCommand
+        PipelineCommand parent;
+
         @CommandLine.Spec
         CommandLine.Model.CommandSpec spec;
 
-        @Option(names = "--bootstrap-servers", paramLabel = "HOST:PORT", defaultValue = "127.0.0.1:9092",
-                description = "Kafka cluster (default: ${DEFAULT-VALUE}).")
-        String bootstrap;
-
-        @Option(names = "--topic", defaultValue = "trajeval.runs", description = "Topic (default: ${DEFAULT-VALUE}).")
+        @Option(names = "--topic", description = "Topic (default: kafka.input_topic, trajeval.runs).")
         String topic;
 
         @CommandLine.Parameters(paramLabel = "FILE", arity = "1..*", description = "Event files.")
@@ -254,8 +266,10 @@ public final class PipelineCommand implements Runnable {
 
         @Override
         public Integer call() {
-            int n = org.trajeval.pipeline.kafka.KafkaMode.send(bootstrap, topic, files);
-            spec.commandLine().getOut().println("sent " + n + " event(s) to " + topic);
+            PipelineConfig c = load(parent.env);
+            String t = topic == null ? c.kafka().inputTopic() : topic;
+            int n = KafkaMode.send(KafkaClients.of(c.kafka(), parent.env), t, files);
+            spec.commandLine().getOut().println("sent " + n + " event(s) to " + t);
             spec.commandLine().getOut().flush();
             return 0;
         }
@@ -264,15 +278,14 @@ public final class PipelineCommand implements Runnable {
     /** {@code tail}: prints a topic's committed records (report events, dead letters). */
     @Command(name = "tail", mixinStandardHelpOptions = true,
             description = "Prints the committed records of a topic from its beginning for a few seconds.")
-    static final class Tail implements Callable<Integer> {
+    static final class Tail extends KafkaClientOptions implements Callable<Integer> {
+        @CommandLine.ParentCommand
+        PipelineCommand parent;
+
         @CommandLine.Spec
         CommandLine.Model.CommandSpec spec;
 
-        @Option(names = "--bootstrap-servers", paramLabel = "HOST:PORT", defaultValue = "127.0.0.1:9092",
-                description = "Kafka cluster (default: ${DEFAULT-VALUE}).")
-        String bootstrap;
-
-        @Option(names = "--topic", defaultValue = "trajeval.reports", description = "Topic (default: ${DEFAULT-VALUE}).")
+        @Option(names = "--topic", description = "Topic (default: kafka.output_topic, trajeval.reports).")
         String topic;
 
         @Option(names = "--seconds", defaultValue = "5", description = "How long to read (default: ${DEFAULT-VALUE} s).")
@@ -280,7 +293,75 @@ public final class PipelineCommand implements Runnable {
 
         @Override
         public Integer call() {
-            org.trajeval.pipeline.kafka.KafkaMode.tail(bootstrap, topic, seconds, spec.commandLine().getOut());
+            PipelineConfig c = load(parent.env);
+            KafkaMode.tail(KafkaClients.of(c.kafka(), parent.env), topic == null ? c.kafka().outputTopic() : topic, seconds,
+                    spec.commandLine().getOut());
+            return 0;
+        }
+    }
+
+    /** {@code republish}: publishes report events again from the ledger. */
+    @Command(name = "republish", mixinStandardHelpOptions = true,
+            description = "Publishes the report events of every run reported since a time again, from ROOT's ledger "
+                    + "and report files (consumers drop repeats by run_id and content_sha256).")
+    static final class Republish extends KafkaClientOptions implements Callable<Integer> {
+        @CommandLine.ParentCommand
+        PipelineCommand parent;
+
+        @CommandLine.Spec
+        CommandLine.Model.CommandSpec spec;
+
+        @Option(names = "--root", paramLabel = "DIR", description = "The service's root folder.")
+        String root;
+
+        @Option(names = "--since", required = true, paramLabel = "TIME",
+                description = "ISO-8601 instant (2026-11-23T08:00:00Z) or 'all'.")
+        String since;
+
+        @Override
+        public Integer call() {
+            if (root != null) {
+                set.put("root", root);
+            }
+            PipelineConfig c = load(parent.env);
+            java.time.Instant from;
+            try {
+                from = "all".equals(since) ? java.time.Instant.EPOCH : java.time.Instant.parse(since);
+            } catch (java.time.format.DateTimeParseException e) {
+                throw new CommandLine.ParameterException(spec.commandLine(),
+                        "--since must be an ISO-8601 instant such as 2026-11-23T08:00:00Z, or 'all', found \"" + since + "\"");
+            }
+            int n = KafkaMode.republish(c, KafkaClients.of(c.kafka(), parent.env), from);
+            spec.commandLine().getOut().println("re-published " + n + " report event(s) to " + c.kafka().outputTopic());
+            spec.commandLine().getOut().flush();
+            return 0;
+        }
+    }
+
+    /** {@code config --show}: the effective configuration, secrets masked. */
+    @Command(name = "config", mixinStandardHelpOptions = true,
+            description = "Prints the effective configuration (defaults, file, environment, options) and the Kafka "
+                    + "client settings every client gets, with secrets masked.")
+    static final class ConfigCmd extends Common implements Callable<Integer> {
+        @CommandLine.ParentCommand
+        PipelineCommand parent;
+
+        @CommandLine.Spec
+        CommandLine.Model.CommandSpec spec;
+
+        @Option(names = "--show", required = true, description = "Print the effective configuration.")
+        boolean show;
+
+        @Override
+        public Integer call() {
+            PipelineConfig c = load(parent.env);
+            PrintWriter out = spec.commandLine().getOut();
+            out.print(ConfigLoader.toYaml(c));
+            out.println("# Kafka client settings applied to every client (secrets masked):");
+            out.println("bootstrap.servers=" + c.kafka().bootstrapServers());
+            org.trajeval.pipeline.kafka.ClientSettings.of(c.kafka(), parent.env).masked()
+                    .forEach((k, v) -> out.println(k + "=" + v));
+            out.flush();
             return 0;
         }
     }

@@ -45,22 +45,46 @@ public record PipelineConfig(String root, int workers, int queueCapacity, String
     }
 
     /**
-     * @param bootstrapServers host:port list of the cluster (ignored with --embedded-broker)
+     * @param bootstrapServers host:port list of the cluster
      * @param groupId consumer group shared by every instance
      * @param inputTopic topic of run events
      * @param outputTopic topic of report events
      * @param deadLetterTopic topic of refused events with their reason
-     * @param partitions partitions of the topics when the service creates them
+     * @param partitions partitions of the topics when the service creates (or re-creates) them
      * @param bundleBase folder that bundle locations in events are relative to (and must stay in)
      * @param sessionTimeoutMs consumer session timeout (ms): how soon a dead instance's partitions move
-     * @param transactionTimeoutMs producer transaction timeout (ms)
-     * @param instanceId this instance's id (transactional id suffix); empty: host name + process id
-     * @param embeddedBrokerDir data folder of --embedded-broker; empty: ROOT/kafka-data
-     * @param embeddedBrokerPort port of --embedded-broker; 0: a free one
+     * @param transactionTimeoutMs producer transaction timeout (ms): the longest broker outage a
+     *     transaction rides out; capped by the broker's {@code transaction.max.timeout.ms} (15 min by default)
+     * @param instanceId this instance's id (transactional id suffix); empty: the id persisted in
+     *     ROOT/kafka-instances/ (one slot per running instance sharing the root)
+     * @param unhealthyAfterS how long the broker may be unreachable, or commits fail, before
+     *     /health answers 503 (s)
+     * @param startupTimeoutS how long start-up waits for the broker before exiting with code 5 (s); 0: forever
+     * @param clientProperties a Kafka client properties file applied to every Kafka client (what
+     *     Kafka's tools take with --command-config; config providers work); empty: none
+     * @param security typed shortcuts for the common secured connections
      */
     public record Kafka(String bootstrapServers, String groupId, String inputTopic, String outputTopic,
             String deadLetterTopic, int partitions, String bundleBase, int sessionTimeoutMs, int transactionTimeoutMs,
-            String instanceId, String embeddedBrokerDir, int embeddedBrokerPort) {
+            String instanceId, double unhealthyAfterS, double startupTimeoutS, String clientProperties,
+            Security security) {
+    }
+
+    /**
+     * Shortcuts for TLS and SASL; each secret is a reference, {@code env:VARIABLE} or
+     * {@code file:PATH} (the whole file, trailing newline dropped), never the secret itself.
+     *
+     * @param protocol security.protocol: PLAINTEXT, SSL, SASL_PLAINTEXT or SASL_SSL; empty: as the properties file says
+     * @param saslMechanism PLAIN, SCRAM-SHA-256 or SCRAM-SHA-512; empty: none
+     * @param saslUsername SASL user name
+     * @param saslPassword reference to the SASL password
+     * @param truststore truststore file (PKCS12, JKS or PEM, by extension): the CA that signed the broker's certificate
+     * @param truststorePassword reference to the truststore's password (empty for PEM)
+     * @param keystore keystore file for mutual TLS: this client's certificate and key
+     * @param keystorePassword reference to the keystore's (and its key's) password
+     */
+    public record Security(String protocol, String saslMechanism, String saslUsername, String saslPassword,
+            String truststore, String truststorePassword, String keystore, String keystorePassword) {
     }
 
     /** @return the defaults */
@@ -70,7 +94,8 @@ public record PipelineConfig(String root, int workers, int queueCapacity, String
                         BundleLimits.DEFAULTS.maxZipEntries(), BundleLimits.DEFAULTS.maxCompressionRatio()),
                 new Http(true, "127.0.0.1", 9464),
                 new Kafka("127.0.0.1:9092", "trajeval-pipeline", "trajeval.runs", "trajeval.reports",
-                        "trajeval.runs.dlq", 3, "", 10_000, 30_000, "", "", 0));
+                        "trajeval.runs.dlq", 3, "", 10_000, 300_000, "", 60, 0, "",
+                        new Security("", "", "", "", "", "", "", "")));
     }
 
     /** @return the root folder */

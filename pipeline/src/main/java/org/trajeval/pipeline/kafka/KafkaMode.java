@@ -7,112 +7,105 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Clock;
 import java.time.Duration;
-import java.util.Properties;
+import java.time.Instant;
+import java.util.List;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
 import org.apache.kafka.clients.consumer.ConsumerRecord;
 import org.apache.kafka.clients.consumer.KafkaConsumer;
 import org.apache.kafka.clients.producer.KafkaProducer;
 import org.apache.kafka.clients.producer.ProducerRecord;
+import org.apache.kafka.common.KafkaException;
 import org.apache.kafka.common.TopicPartition;
-import org.apache.kafka.common.serialization.StringDeserializer;
-import org.apache.kafka.common.serialization.StringSerializer;
-import java.lang.management.ManagementFactory;
-import java.net.InetAddress;
-import java.net.UnknownHostException;
-import java.nio.file.Path;
-import java.time.Clock;
-import java.util.ArrayList;
-import java.util.List;
-import java.util.Map;
-import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.TimeUnit;
-import org.apache.kafka.clients.admin.Admin;
-import org.apache.kafka.clients.admin.NewTopic;
-import org.apache.kafka.common.errors.TopicExistsException;
+import org.apache.kafka.common.errors.AuthenticationException;
+import org.apache.kafka.common.errors.AuthorizationException;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 import org.trajeval.pipeline.PipelineConfig;
 import org.trajeval.pipeline.ReportStore;
 import org.trajeval.pipeline.RunProcessor;
 import org.trajeval.pipeline.RunScorer;
 import org.trajeval.pipeline.dir.DirectoryLayout;
 import org.trajeval.pipeline.ledger.Ledger;
+import org.trajeval.pipeline.ledger.LedgerEntry;
+import org.trajeval.pipeline.metrics.HealthStatus;
 import org.trajeval.pipeline.metrics.HttpEndpoint;
 import org.trajeval.pipeline.metrics.PipelineMetrics;
 
-/** Wires and runs the Kafka mode from a configuration (the launcher's {@code kafka} and {@code broker}). */
+/** Wires and runs the Kafka mode from a configuration (the launcher's {@code kafka}, {@code send}, {@code tail}, {@code republish}). */
 public final class KafkaMode {
+    private static final Logger LOG = LoggerFactory.getLogger(KafkaMode.class);
+
     private KafkaMode() {
     }
 
     /**
-     * Runs the Kafka mode until SIGTERM.
+     * Runs the Kafka mode until SIGTERM or SIGINT.
      *
+     * @param c the configuration
+     * @param scorer scores runs
+     * @param clients builds the Kafka clients
      * @return the exit code (0)
+     * @throws BrokerFailure when no broker answers within {@code kafka.startup_timeout_s}, or the
+     *     broker refuses this client
      */
-    public static int run(PipelineConfig c, RunScorer scorer, boolean embeddedBroker) {
+    public static int run(PipelineConfig c, RunScorer scorer, KafkaClients clients) throws InterruptedException {
         PipelineConfig.Kafka k = c.kafka();
         DirectoryLayout layout = new DirectoryLayout(c.rootPath()).create();
-        EmbeddedBroker broker = null;
-        String bootstrap = k.bootstrapServers();
-        if (embeddedBroker) {
-            Path data = k.embeddedBrokerDir().isBlank() ? layout.root().resolve("kafka-data") : Path.of(k.embeddedBrokerDir());
-            broker = EmbeddedBroker.start(data, k.embeddedBrokerPort());
-            bootstrap = broker.bootstrapServers();
-            org.slf4j.LoggerFactory.getLogger(KafkaMode.class).info("embedded broker on {}", bootstrap);
-        }
-        try (Ledger ledger = Ledger.open(layout.ledger())) {
-            createTopics(bootstrap, List.of(k.inputTopic(), k.outputTopic(), k.deadLetterTopic()), k.partitions());
-            String instance = k.instanceId().isBlank() ? defaultInstanceId() : k.instanceId();
+        try (Ledger ledger = Ledger.open(layout.ledger());
+                InstanceIdentity identity = k.instanceId().isBlank()
+                        ? InstanceIdentity.claim(layout.root().resolve("kafka-instances"))
+                        : InstanceIdentity.fixed(k.instanceId())) {
+            String instance = identity.id();
             Path base = k.bundleBase().isBlank() ? layout.incoming() : Path.of(k.bundleBase());
-            KafkaSettings s = new KafkaSettings(bootstrap, k.groupId(), k.inputTopic(), k.outputTopic(),
-                    k.deadLetterTopic(), instance, base, layout.root().resolve("kafka-work").resolve(instance),
-                    k.sessionTimeoutMs(), k.transactionTimeoutMs(), c.workers());
+            KafkaSettings s = new KafkaSettings(k.groupId(), k.inputTopic(), k.outputTopic(), k.deadLetterTopic(),
+                    k.partitions(), instance, base, layout.root().resolve("kafka-work").resolve(instance),
+                    k.sessionTimeoutMs(), k.transactionTimeoutMs(), c.workers(), seconds(k.unhealthyAfterS()));
+            LOG.info("Kafka mode: broker {}, group {}, transactional id {}, transaction timeout {} s",
+                    clients.bootstrapServers(), s.groupId(), s.transactionalId(), s.transactionTimeoutMs() / 1000);
             PipelineMetrics metrics = PipelineMetrics.prometheus();
-            RunProcessor processor = new RunProcessor(scorer, new ReportStore(layout.reports(), ledger, Clock.systemUTC()));
-            KafkaService service = new KafkaService(s, processor, c.bundleLimits(), metrics, Clock.systemUTC());
-            HttpEndpoint http = c.http().enabled()
-                    ? HttpEndpoint.start(c.http().host(), c.http().port(), metrics::scrape, () -> true) : null;
-            CountDownLatch finished = new CountDownLatch(1);
-            Thread hook = new Thread(() -> {
-                service.stop();
-                try {
-                    finished.await(60, TimeUnit.SECONDS);
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                }
-            }, "trajeval-shutdown");
-            Runtime.getRuntime().addShutdownHook(hook);
-            try {
-                service.run();
-            } finally {
+            ReportStore store = new ReportStore(layout.reports(), ledger, Clock.systemUTC());
+            RunProcessor processor = new RunProcessor(scorer, store);
+            TopicKeeper keeper = new TopicKeeper(s, clients.bootstrapServers(), layout.root().resolve("kafka-state"));
+            try (BrokerWatch watch = new BrokerWatch(clients, keeper, metrics, Clock.systemUTC(), s.unhealthyAfter(),
+                    () -> metrics.runsHeld().get())) {
+                KafkaService service = new KafkaService(s, clients, processor,
+                        new Republisher(ledger, store, s.outputTopic()), c.bundleLimits(), metrics, watch,
+                        Clock.systemUTC());
+                HttpEndpoint http = c.http().enabled() ? HttpEndpoint.startWithReason(c.http().host(), c.http().port(),
+                        metrics::scrape, () -> service.isRunning() ? watch.health()
+                                : HealthStatus.down("not consuming (waiting for the broker at " + clients.bootstrapServers()
+                                        + ", or stopping)")) : null;
                 if (http != null) {
-                    http.close();
+                    LOG.info("serving /metrics and /health on http://{}:{}", c.http().host(), http.port());
                 }
-                finished.countDown();
-            }
-            return 0;
-        } finally {
-            if (broker != null) {
-                broker.close();
+                try (StopSignals signals = StopSignals.install(() -> {
+                    watch.stop();
+                    service.stop();
+                })) {
+                    if (watch.awaitBroker(seconds(k.startupTimeoutS()))) {
+                        watch.start();
+                        service.run();
+                    }
+                } finally {
+                    if (http != null) {
+                        http.close();
+                    }
+                }
+                LOG.info("stopped");
+                return 0;
             }
         }
     }
 
-    /** Runs a broker until SIGTERM, printing its bootstrap address. */
-    public static int runBroker(Path data, int port, List<String> topics, PrintWriter out) throws InterruptedException {
-        EmbeddedBroker broker = EmbeddedBroker.start(data, port);
-        CountDownLatch stop = new CountDownLatch(1);
-        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
-            broker.close();
-            stop.countDown();
-        }, "trajeval-broker-shutdown"));
-        if (!topics.isEmpty()) {
-            createTopics(broker.bootstrapServers(), topics, 3);
+    private static Duration seconds(double s) {
+        if (!(s >= 0) || Double.isInfinite(s)) {
+            throw new IllegalArgumentException("a duration in seconds must be finite and >= 0, found " + s);
         }
-        out.println("broker running on " + broker.bootstrapServers() + " (stop with Ctrl-C)");
-        out.flush();
-        stop.await();
-        return 0;
+        return Duration.ofMillis(Math.round(s * 1000));
     }
 
     /**
@@ -120,13 +113,10 @@ public final class KafkaMode {
      *
      * @return the number of events sent
      */
-    public static int send(String bootstrap, String topic, List<Path> files) {
-        Properties pp = new Properties();
-        pp.put("bootstrap.servers", bootstrap);
-        pp.put("acks", "all");
+    public static int send(KafkaClients clients, String topic, List<Path> files) {
         ObjectMapper json = new ObjectMapper();
         int n = 0;
-        try (KafkaProducer<String, String> p = new KafkaProducer<>(pp, new StringSerializer(), new StringSerializer())) {
+        try (KafkaProducer<String, String> p = clients.plainProducer()) {
             for (Path f : files) {
                 List<String> values = f.toString().endsWith(".jsonl")
                         ? Files.readAllLines(f).stream().filter(l -> !l.isBlank()).toList() : List.of(Files.readString(f));
@@ -138,30 +128,69 @@ public final class KafkaMode {
                     } catch (JsonProcessingException e) {
                         // sent as is: the service puts it in the dead-letter topic with the reason
                     }
-                    p.send(new ProducerRecord<>(topic, key, v)).get(30, TimeUnit.SECONDS);
+                    get(clients, p.send(new ProducerRecord<>(topic, key, v)));
                     n++;
                 }
             }
         } catch (IOException e) {
             throw new UncheckedIOException(e);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new IllegalStateException("interrupted", e);
-        } catch (ExecutionException | java.util.concurrent.TimeoutException e) {
-            throw new IllegalStateException("could not send to " + bootstrap + ": " + e, e);
         }
         return n;
     }
 
+    /**
+     * Publishes the report events of every ledger entry since {@code since} again (duplicates
+     * are harmless: consumers drop repeats by run id and content hash).
+     *
+     * @return the number of events sent
+     */
+    public static int republish(PipelineConfig c, KafkaClients clients, Instant since) {
+        DirectoryLayout layout = new DirectoryLayout(c.rootPath());
+        if (!Files.isRegularFile(layout.ledger())) {
+            throw new IllegalArgumentException(layout.ledger() + ": no ledger here; --root must be the service's root");
+        }
+        try (Ledger ledger = Ledger.open(layout.ledger());
+                KafkaProducer<String, String> p = clients.plainProducer()) {
+            Republisher r = new Republisher(ledger, new ReportStore(layout.reports(), ledger, Clock.systemUTC()),
+                    c.kafka().outputTopic());
+            int n = 0;
+            for (LedgerEntry e : r.entriesSince(since)) {
+                ProducerRecord<String, String> event = r.event(e);
+                if (event != null) {
+                    p.send(event);
+                    n++;
+                }
+            }
+            p.flush();
+            return n;
+        }
+    }
+
+    private static void get(KafkaClients clients, java.util.concurrent.Future<?> f) {
+        try {
+            f.get(60, TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("interrupted", e);
+        } catch (ExecutionException e) {
+            if (e.getCause() instanceof AuthenticationException || e.getCause() instanceof AuthorizationException) {
+                throw new BrokerFailure(BrokerFailure.Kind.REFUSED, clients.bootstrapServers(),
+                        BrokerMessages.refused(clients, e.getCause()));
+            }
+            throw new BrokerFailure(BrokerFailure.Kind.UNREACHABLE, clients.bootstrapServers(),
+                    "could not send to " + clients.bootstrapServers() + ": " + BrokerMessages.shortReason(e.getCause()));
+        } catch (java.util.concurrent.TimeoutException e) {
+            throw new BrokerFailure(BrokerFailure.Kind.UNREACHABLE, clients.bootstrapServers(),
+                    "no Kafka broker answered at " + clients.bootstrapServers() + " within 60 s");
+        }
+    }
+
     /** Prints the committed records of a topic from its beginning, one value per line, for {@code seconds}. */
-    public static int tail(String bootstrap, String topic, int seconds, PrintWriter out) {
-        Properties cp = new Properties();
-        cp.put("bootstrap.servers", bootstrap);
-        cp.put("isolation.level", "read_committed");
+    public static int tail(KafkaClients clients, String topic, int seconds, PrintWriter out) {
         int n = 0;
-        try (KafkaConsumer<String, String> c = new KafkaConsumer<>(cp, new StringDeserializer(), new StringDeserializer())) {
-            List<TopicPartition> tps = c.partitionsFor(topic).stream().map(pi -> new TopicPartition(topic, pi.partition()))
-                    .toList();
+        try (KafkaConsumer<String, String> c = clients.readerConsumer()) {
+            List<TopicPartition> tps = c.partitionsFor(topic, Duration.ofSeconds(30)).stream()
+                    .map(pi -> new TopicPartition(topic, pi.partition())).toList();
             c.assign(tps);
             c.seekToBeginning(tps);
             long end = System.nanoTime() + seconds * 1_000_000_000L;
@@ -172,42 +201,16 @@ public final class KafkaMode {
                 }
                 out.flush();
             }
+        } catch (AuthenticationException | AuthorizationException e) {
+            throw new BrokerFailure(BrokerFailure.Kind.REFUSED, clients.bootstrapServers(),
+                    BrokerMessages.refused(clients, e));
+        } catch (org.apache.kafka.common.errors.TimeoutException e) {
+            throw new BrokerFailure(BrokerFailure.Kind.UNREACHABLE, clients.bootstrapServers(),
+                    "no Kafka broker answered at " + clients.bootstrapServers() + " within 30 s");
+        } catch (KafkaException e) {
+            throw new BrokerFailure(BrokerFailure.Kind.UNREACHABLE, clients.bootstrapServers(),
+                    "could not read " + topic + " from " + clients.bootstrapServers() + ": " + BrokerMessages.shortReason(e));
         }
         return n;
-    }
-
-    /** Creates topics that do not exist yet. */
-    public static void createTopics(String bootstrap, List<String> names, int partitions) {
-        try (Admin admin = Admin.create(Map.of("bootstrap.servers", bootstrap))) {
-            List<NewTopic> topics = new ArrayList<>();
-            for (String n : names) {
-                topics.add(new NewTopic(n, partitions, (short) 1));
-            }
-            var result = admin.createTopics(topics).values();
-            for (var f : result.values()) {
-                try {
-                    f.get(60, TimeUnit.SECONDS);
-                } catch (ExecutionException e) {
-                    if (!(e.getCause() instanceof TopicExistsException)) {
-                        throw new IllegalStateException("could not create topics on " + bootstrap + ": " + e.getCause(), e);
-                    }
-                }
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new IllegalStateException("interrupted while creating topics", e);
-        } catch (java.util.concurrent.TimeoutException e) {
-            throw new IllegalStateException("Kafka at " + bootstrap + " did not answer within 60 s", e);
-        }
-    }
-
-    private static String defaultInstanceId() {
-        String host;
-        try {
-            host = InetAddress.getLocalHost().getHostName();
-        } catch (UnknownHostException e) {
-            host = "localhost";
-        }
-        return host + "-" + ManagementFactory.getRuntimeMXBean().getPid();
     }
 }

@@ -15,7 +15,6 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import java.util.Properties;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -29,8 +28,22 @@ import org.apache.kafka.clients.producer.ProducerRecord;
 import org.apache.kafka.common.KafkaException;
 import org.apache.kafka.common.TopicPartition;
 import org.apache.kafka.common.errors.WakeupException;
-import org.apache.kafka.common.serialization.StringDeserializer;
-import org.apache.kafka.common.serialization.StringSerializer;
+import java.time.Instant;
+import java.util.Optional;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import org.apache.kafka.common.errors.AuthenticationException;
+import org.apache.kafka.common.errors.AuthorizationException;
+import org.apache.kafka.common.errors.InvalidPidMappingException;
+import org.apache.kafka.common.errors.InvalidProducerEpochException;
+import org.apache.kafka.common.errors.InvalidTxnStateException;
+import org.apache.kafka.common.errors.InvalidTxnTimeoutException;
+import org.apache.kafka.common.errors.OutOfOrderSequenceException;
+import org.apache.kafka.common.errors.ProducerFencedException;
+import org.apache.kafka.common.errors.TimeoutException;
+import org.apache.kafka.common.errors.UnknownProducerIdException;
+import org.apache.kafka.common.errors.UnsupportedVersionException;
+import org.trajeval.pipeline.ledger.LedgerEntry;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.trajeval.core.InputException;
@@ -54,41 +67,65 @@ import org.trajeval.pipeline.metrics.PipelineMetrics;
  * the commit aborts the transaction; the record is delivered again, the ledger recognises the
  * report as already written, and its report event is sent again in the new transaction: one
  * report file and one committed report event per run.
+ *
+ * <p>Broker faults never end the loop (the shape of Apache Kafka's
+ * {@code ExactlyOnceMessageProcessor} example): a commit that times out is retried while the
+ * transaction may stay open; an abortable error aborts the transaction and rewinds the consumer
+ * to the batch's first offsets; a fatal producer error (fenced, invalid producer id mapping,
+ * out-of-order sequence, a timed-out transaction) closes the producer and builds a new one with
+ * the same transactional id, which fences the old one and aborts its transaction, then rewinds.
+ * Only {@link #stop()} or a broker refusing this client ({@link BrokerFailure}) ends it. When the
+ * broker has lost the output topic ({@link BrokerWatch#republishNeeded()}), every report in the
+ * ledger is published again.
  */
 public final class KafkaService {
     private static final Logger LOG = LoggerFactory.getLogger(KafkaService.class);
     private static final ObjectMapper JSON = new ObjectMapper();
+    private static final int REPUBLISH_CHUNK = 200;
+    private static final long MAX_PAUSE_S = 30;
 
     private final KafkaSettings settings;
+    private final KafkaClients clients;
     private final RunProcessor processor;
+    private final Republisher republisher;
     private final BundleOpener opener;
     private final BundleLimits limits;
     private final PipelineMetrics metrics;
+    private final BrokerWatch watch;
     private final Clock clock;
+    private final CountDownLatch stopSignal = new CountDownLatch(1);
     private volatile boolean stopping;
     private volatile boolean running;
     private volatile KafkaConsumer<String, String> consumer;
+    private KafkaProducer<String, String> producer;
 
     /**
      * @param settings topics, group, folders
+     * @param clients builds the Kafka clients
      * @param processor scores and files runs
+     * @param republisher re-builds report events from the ledger
      * @param limits bundle limits
      * @param metrics where to count
+     * @param watch broker health, commit state and lost topics
      * @param clock clock for dead-letter records
      */
-    public KafkaService(KafkaSettings settings, RunProcessor processor, BundleLimits limits, PipelineMetrics metrics,
-            Clock clock) {
+    public KafkaService(KafkaSettings settings, KafkaClients clients, RunProcessor processor, Republisher republisher,
+            BundleLimits limits, PipelineMetrics metrics, BrokerWatch watch, Clock clock) {
         this.settings = settings;
+        this.clients = clients;
         this.processor = processor;
+        this.republisher = republisher;
         this.limits = limits;
         this.opener = new BundleOpener(limits);
         this.metrics = metrics;
+        this.watch = watch;
         this.clock = clock;
     }
 
     /** Stops the loop after the current transaction. */
     public void stop() {
         stopping = true;
+        stopSignal.countDown();
         KafkaConsumer<String, String> c = consumer;
         if (c != null) {
             c.wakeup();
@@ -100,97 +137,274 @@ public final class KafkaService {
         return running && !stopping;
     }
 
-    /** Consumes until {@link #stop()}. */
+    /**
+     * Consumes until {@link #stop()}.
+     *
+     * @throws BrokerFailure when the broker refuses this client (credentials, TLS, ACLs)
+     */
     public void run() {
-        Properties cp = new Properties();
-        cp.put("bootstrap.servers", settings.bootstrapServers());
-        cp.put("group.id", settings.groupId());
-        cp.put("enable.auto.commit", "false");
-        cp.put("isolation.level", "read_committed");
-        cp.put("auto.offset.reset", "earliest");
-        cp.put("max.poll.records", "20");
-        cp.put("session.timeout.ms", String.valueOf(settings.sessionTimeoutMs()));
-        cp.put("heartbeat.interval.ms", String.valueOf(Math.max(100, settings.sessionTimeoutMs() / 4)));
-        cp.put("client.id", "trajeval-" + settings.instanceId());
-        Properties pp = new Properties();
-        pp.put("bootstrap.servers", settings.bootstrapServers());
-        pp.put("transactional.id", settings.groupId() + "-" + settings.instanceId());
-        pp.put("enable.idempotence", "true");
-        pp.put("acks", "all");
-        pp.put("transaction.timeout.ms", String.valueOf(settings.transactionTimeoutMs()));
-        pp.put("client.id", "trajeval-" + settings.instanceId() + "-producer");
         ExecutorService pool = Executors.newFixedThreadPool(settings.workers(), r -> new Thread(r, "trajeval-kafka-worker"));
-        try (KafkaConsumer<String, String> c = new KafkaConsumer<>(cp, new StringDeserializer(), new StringDeserializer());
-                KafkaProducer<String, String> producer = new KafkaProducer<>(pp, new StringSerializer(), new StringSerializer())) {
+        try (KafkaConsumer<String, String> c = clients.serviceConsumer(settings)) {
             consumer = c;
-            producer.initTransactions();
+            if (stopping) {
+                return;
+            }
             c.subscribe(List.of(settings.inputTopic()));
             running = true;
             while (!stopping) {
+                if (producer == null && !buildProducer()) {
+                    break;
+                }
+                Optional<String> lostTopic = watch.republishNeeded();
+                if (lostTopic.isPresent()) {
+                    republishAll(lostTopic.get());
+                    continue;
+                }
                 ConsumerRecords<String, String> records;
                 try {
                     records = c.poll(Duration.ofMillis(500));
                 } catch (WakeupException e) {
-                    break;
-                }
-                updateLag(c);
-                if (records.isEmpty()) {
+                    continue;
+                } catch (AuthenticationException | AuthorizationException e) {
+                    throw refused(e);
+                } catch (KafkaException e) {
+                    LOG.warn("poll failed ({}); retrying in 1 s", BrokerMessages.shortReason(e));
+                    pause(1);
                     continue;
                 }
-                processBatch(c, producer, pool, records);
+                updateLag(c);
+                if (!records.isEmpty()) {
+                    processBatch(c, pool, records);
+                }
             }
         } finally {
             running = false;
             consumer = null;
+            closeProducer();
             pool.shutdown();
         }
     }
 
-    private void processBatch(KafkaConsumer<String, String> c, KafkaProducer<String, String> producer, ExecutorService pool,
-            ConsumerRecords<String, String> records) {
-        List<ConsumerRecord<String, String>> list = new ArrayList<>();
-        records.forEach(list::add);
-        List<Future<List<ProducerRecord<String, String>>>> futures = new ArrayList<>();
-        for (ConsumerRecord<String, String> r : list) {
-            futures.add(pool.submit(() -> handle(r)));
-        }
-        producer.beginTransaction();
-        try {
-            for (Future<List<ProducerRecord<String, String>>> f : futures) {
-                for (ProducerRecord<String, String> out : f.get()) {
-                    producer.send(out);
+    /** Builds the transactional producer, waiting with back-off while the broker is away. @return false when stopped */
+    private boolean buildProducer() {
+        for (int attempt = 0; !stopping; attempt++) {
+            KafkaProducer<String, String> p = null;
+            try {
+                p = clients.serviceProducer(settings);
+                p.initTransactions();
+                producer = p;
+                if (attempt > 0) {
+                    LOG.info("producer {} ready again", settings.transactionalId());
                 }
+                return true;
+            } catch (AuthenticationException | AuthorizationException e) {
+                close(p);
+                throw refused(e);
+            } catch (KafkaException | IllegalStateException e) {
+                close(p);
+                for (Throwable t = e; t != null; t = t.getCause()) {
+                    if (t instanceof InvalidTxnTimeoutException) {
+                        throw new IllegalArgumentException("kafka.transaction_timeout_ms (" + settings.transactionTimeoutMs()
+                                + " ms) is longer than the broker " + clients.bootstrapServers() + " allows "
+                                + "(transaction.max.timeout.ms, 15 min by default): lower it");
+                    }
+                }
+                if (attempt == 0) {
+                    LOG.warn("producer {} cannot start a transaction yet ({}); retrying", settings.transactionalId(),
+                            BrokerMessages.shortReason(e));
+                }
+                pause(Math.min(MAX_PAUSE_S, 1L << Math.min(attempt, 5)));
             }
-            Map<TopicPartition, OffsetAndMetadata> offsets = new HashMap<>();
-            for (TopicPartition tp : records.partitions()) {
-                List<ConsumerRecord<String, String>> rs = records.records(tp);
-                offsets.put(tp, new OffsetAndMetadata(rs.get(rs.size() - 1).offset() + 1));
-            }
-            producer.sendOffsetsToTransaction(offsets, c.groupMetadata());
-            producer.commitTransaction();
+        }
+        return false;
+    }
+
+    private void processBatch(KafkaConsumer<String, String> c, ExecutorService pool,
+            ConsumerRecords<String, String> records) {
+        List<ProducerRecord<String, String>> out;
+        try {
+            out = score(pool, records);
+        } catch (ExecutionException e) {
+            LOG.error("internal error while scoring a batch of {} records; it will be delivered again", records.count(),
+                    e.getCause());
+            rewind(c, records);
+            pause(1);
+            return;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-            abortAndRewind(c, producer, records);
-        } catch (ExecutionException | KafkaException e) {
-            LOG.warn("transaction failed, the batch will be delivered again: {}", e.toString());
-            abortAndRewind(c, producer, records);
-            if (e instanceof org.apache.kafka.common.errors.ProducerFencedException) {
-                throw (KafkaException) e;
+            rewind(c, records);
+            return;
+        }
+        metrics.runsHeld().set(records.count());
+        try {
+            producer.beginTransaction();
+            for (ProducerRecord<String, String> r : out) {
+                producer.send(r);
+            }
+            producer.sendOffsetsToTransaction(offsets(records), c.groupMetadata());
+            commit();
+            watch.commitSucceeded();
+            metrics.runsHeld().set(0);
+        } catch (AuthenticationException | AuthorizationException e) {
+            closeProducer();
+            rewind(c, records);
+            throw refused(e);
+        } catch (KafkaException | IllegalStateException e) {
+            watch.commitFailed(BrokerMessages.shortReason(e));
+            recover(e, records.count());
+            rewind(c, records);
+        }
+    }
+
+    /** Commits, retrying a commit that timed out (the transaction stays open on the broker) until stopped. */
+    private void commit() {
+        while (true) {
+            try {
+                producer.commitTransaction();
+                return;
+            } catch (TimeoutException e) {
+                watch.commitFailed("commit timed out: " + BrokerMessages.shortReason(e));
+                if (stopping) {
+                    throw e;
+                }
             }
         }
     }
 
-    private static void abortAndRewind(KafkaConsumer<String, String> c, KafkaProducer<String, String> producer,
-            ConsumerRecords<String, String> records) {
+    /** Aborts the transaction, or re-creates the producer when it cannot go on. */
+    private void recover(RuntimeException e, int records) {
+        if (isFatal(e)) {
+            LOG.warn("producer {} cannot go on ({}): re-creating it; {} records will be delivered again",
+                    settings.transactionalId(), BrokerMessages.shortReason(e), records);
+            rebuildProducer();
+            return;
+        }
         try {
             producer.abortTransaction();
-        } catch (KafkaException ignored) {
-            // fenced or closing: the broker aborts the transaction on timeout
+            LOG.warn("transaction aborted ({}); {} records will be delivered again", BrokerMessages.shortReason(e), records);
+        } catch (KafkaException | IllegalStateException abortFailed) {
+            LOG.warn("transaction failed ({}) and could not be aborted ({}): re-creating producer {}; {} records will "
+                    + "be delivered again", BrokerMessages.shortReason(e), BrokerMessages.shortReason(abortFailed),
+                    settings.transactionalId(), records);
+            rebuildProducer();
         }
+    }
+
+    private static boolean isFatal(Throwable e) {
+        for (Throwable t = e; t != null; t = t.getCause()) {
+            if (t instanceof ProducerFencedException || t instanceof InvalidProducerEpochException
+                    || t instanceof OutOfOrderSequenceException || t instanceof InvalidPidMappingException
+                    || t instanceof UnknownProducerIdException || t instanceof UnsupportedVersionException
+                    || t instanceof InvalidTxnStateException || t instanceof IllegalStateException) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private void rebuildProducer() {
+        closeProducer();
+        metrics.producerRebuilds().increment();
+    }
+
+    private void closeProducer() {
+        close(producer);
+        producer = null;
+    }
+
+    private static void close(KafkaProducer<String, String> p) {
+        if (p != null) {
+            try {
+                p.close(Duration.ZERO);
+            } catch (KafkaException ignored) {
+                // closing a broken producer: nothing left to save
+            }
+        }
+    }
+
+    private BrokerFailure refused(KafkaException e) {
+        String message = BrokerMessages.refused(clients, e);
+        watch.refused(message);
+        return new BrokerFailure(BrokerFailure.Kind.REFUSED, clients.bootstrapServers(), message);
+    }
+
+    /** Publishes every report in the ledger again, in transactions of {@link #REPUBLISH_CHUNK}. */
+    private void republishAll(String topicId) {
+        // the broker that lost the topic may have lost this producer's id too: start afresh
+        closeProducer();
+        if (!buildProducer()) {
+            return;
+        }
+        List<LedgerEntry> entries = republisher.entriesSince(Instant.EPOCH);
+        LOG.warn("re-publishing {} report events from the ledger to {}", entries.size(), settings.outputTopic());
+        int sent = 0;
+        try {
+            for (int i = 0; i < entries.size() && !stopping; i += REPUBLISH_CHUNK) {
+                producer.beginTransaction();
+                int n = 0;
+                for (LedgerEntry e : entries.subList(i, Math.min(entries.size(), i + REPUBLISH_CHUNK))) {
+                    ProducerRecord<String, String> r = republisher.event(e);
+                    if (r != null) {
+                        producer.send(r);
+                        n++;
+                    }
+                }
+                commit();
+                watch.commitSucceeded();
+                metrics.republished().increment(n);
+                sent += n;
+            }
+        } catch (AuthenticationException | AuthorizationException e) {
+            throw refused(e);
+        } catch (KafkaException | IllegalStateException e) {
+            watch.commitFailed(BrokerMessages.shortReason(e));
+            recover(e, 0);
+            pause(1);
+            return;
+        }
+        if (!stopping) {
+            watch.republished(topicId);
+            LOG.info("re-published {} report events to {}", sent, settings.outputTopic());
+        }
+    }
+
+    private List<ProducerRecord<String, String>> score(ExecutorService pool, ConsumerRecords<String, String> records)
+            throws ExecutionException, InterruptedException {
+        List<Future<List<ProducerRecord<String, String>>>> futures = new ArrayList<>();
+        for (ConsumerRecord<String, String> r : records) {
+            futures.add(pool.submit(() -> handle(r)));
+        }
+        List<ProducerRecord<String, String>> out = new ArrayList<>();
+        for (Future<List<ProducerRecord<String, String>>> f : futures) {
+            out.addAll(f.get());
+        }
+        return out;
+    }
+
+    private static Map<TopicPartition, OffsetAndMetadata> offsets(ConsumerRecords<String, String> records) {
+        Map<TopicPartition, OffsetAndMetadata> offsets = new HashMap<>();
+        for (TopicPartition tp : records.partitions()) {
+            List<ConsumerRecord<String, String>> rs = records.records(tp);
+            offsets.put(tp, new OffsetAndMetadata(rs.get(rs.size() - 1).offset() + 1));
+        }
+        return offsets;
+    }
+
+    /** Seeks back to the batch's first offsets: they follow the last committed ones. */
+    private static void rewind(KafkaConsumer<String, String> c, ConsumerRecords<String, String> records) {
         for (TopicPartition tp : records.partitions()) {
             if (c.assignment().contains(tp)) {
                 c.seek(tp, records.records(tp).get(0).offset());
             }
+        }
+    }
+
+    private void pause(long seconds) {
+        try {
+            stopSignal.await(seconds, TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            stopping = true;
         }
     }
 
@@ -222,13 +436,13 @@ public final class KafkaService {
         return switch (result.outcome()) {
             case REPORTED -> {
                 LOG.info("reported run_id={} version={} source={}", result.runId(), result.version(), source);
-                yield List.of(reportEvent(key, result, source));
+                yield List.of(ReportEvents.of(settings.outputTopic(), result.report(), source, false));
             }
             case DUPLICATE -> {
                 if (source.equals(result.firstSource())) {
                     // delivered again after an aborted transaction: publish its report event again
                     LOG.info("re-delivered run_id={} source={}", result.runId(), source);
-                    yield List.of(reportEvent(key, result, source));
+                    yield List.of(ReportEvents.of(settings.outputTopic(), result.report(), source, false));
                 }
                 LOG.info("duplicate run_id={} source={} first={}", result.runId(), source, result.firstSource());
                 yield List.of();
@@ -282,20 +496,6 @@ public final class KafkaService {
         Path p = dir.resolve(inline.fileName());
         Files.write(p, bytes);
         return p;
-    }
-
-    private ProducerRecord<String, String> reportEvent(String key, RunResult result, String source) {
-        ObjectNode ev = JSON.createObjectNode();
-        ev.put("run_id", result.runId());
-        ev.put("run_version", result.version());
-        ev.put("report_path", result.report().toString());
-        ev.put("source", source);
-        try {
-            ev.set("report", JSON.readTree(Files.readString(result.report())));
-        } catch (IOException e) {
-            throw new UncheckedIOException("could not read back " + result.report() + ": " + e.getMessage(), e);
-        }
-        return new ProducerRecord<>(settings.outputTopic(), key, ev.toString());
     }
 
     private ProducerRecord<String, String> deadLetter(String key, ConsumerRecord<String, String> r, RunFailure f) {

@@ -12,7 +12,7 @@ import java.util.function.Supplier;
 
 /**
  * {@code GET /metrics} (Prometheus text format) and {@code GET /health} ({@code {"status":"UP"}}
- * with 200, or DOWN with 503) on a local address, 127.0.0.1 by default.
+ * with 200, or {@code {"status":"DOWN","reason":"..."}} with 503) on a local address, 127.0.0.1 by default.
  */
 public final class HttpEndpoint implements AutoCloseable {
     private final HttpServer server;
@@ -30,12 +30,26 @@ public final class HttpEndpoint implements AutoCloseable {
      * @param healthy whether /health says UP
      */
     public static HttpEndpoint start(String host, int port, Supplier<String> metrics, BooleanSupplier healthy) {
+        return startWithReason(host, port, metrics,
+                () -> healthy.getAsBoolean() ? HealthStatus.UP : HealthStatus.down("not running"));
+    }
+
+    /**
+     * Starts serving, with a reason on /health when DOWN.
+     *
+     * @param host address to bind (127.0.0.1 unless told otherwise)
+     * @param port port, 0 for a free one
+     * @param metrics text for /metrics
+     * @param health what /health answers
+     */
+    public static HttpEndpoint startWithReason(String host, int port, Supplier<String> metrics,
+            Supplier<HealthStatus> health) {
         try {
             HttpServer s = HttpServer.create(new InetSocketAddress(host, port), 16);
             s.createContext("/metrics", ex -> reply(ex, 200, "text/plain; version=0.0.4; charset=utf-8", metrics.get()));
             s.createContext("/health", ex -> {
-                boolean up = healthy.getAsBoolean();
-                reply(ex, up ? 200 : 503, "application/json", up ? "{\"status\":\"UP\"}\n" : "{\"status\":\"DOWN\"}\n");
+                HealthStatus h = health.get();
+                reply(ex, h.up() ? 200 : 503, "application/json", h.json());
             });
             s.start();
             return new HttpEndpoint(s);

@@ -19,7 +19,12 @@ import org.trajeval.pipeline.Outcome;
  * processing time per run [{@code trajeval_pipeline_run_duration_seconds} histogram], complete
  * bundles waiting in incoming/ [{@code trajeval_pipeline_queue_depth}], bundles claimed and not
  * finished [{@code trajeval_pipeline_in_processing}], Kafka consumer lag in records
- * [{@code trajeval_pipeline_consumer_lag}].
+ * [{@code trajeval_pipeline_consumer_lag}]; Kafka mode: whether the broker answers
+ * [{@code trajeval_pipeline_broker_reachable} 1 or 0], seconds since the last committed
+ * transaction [{@code trajeval_pipeline_last_commit_age_seconds}, NaN before the first], runs
+ * scored and waiting for their commit [{@code trajeval_pipeline_runs_held}], producers re-created
+ * after a broker fault [{@code trajeval_pipeline_producer_rebuilds_total}], report events
+ * re-published from the ledger [{@code trajeval_pipeline_republished_total}].
  */
 public final class PipelineMetrics {
     private final MeterRegistry registry;
@@ -29,6 +34,11 @@ public final class PipelineMetrics {
     private final AtomicLong queueDepth = new AtomicLong();
     private final AtomicLong inProcessing = new AtomicLong();
     private final AtomicLong consumerLag = new AtomicLong();
+    private final AtomicLong brokerReachable = new AtomicLong();
+    private final AtomicLong lastCommitMillis = new AtomicLong();
+    private final AtomicLong runsHeld = new AtomicLong();
+    private final Counter producerRebuilds;
+    private final Counter republished;
 
     private PipelineMetrics(MeterRegistry registry, PrometheusMeterRegistry prometheus) {
         this.registry = registry;
@@ -46,6 +56,17 @@ public final class PipelineMetrics {
                 .description("bundles claimed and not finished").register(registry);
         Gauge.builder("trajeval.pipeline.consumer.lag", consumerLag, AtomicLong::get)
                 .description("records behind the end of the input topic (Kafka mode)").register(registry);
+        Gauge.builder("trajeval.pipeline.broker.reachable", brokerReachable, AtomicLong::get)
+                .description("1 when the Kafka broker answered the last check, else 0").register(registry);
+        Gauge.builder("trajeval.pipeline.last.commit.age", lastCommitMillis,
+                        t -> t.get() == 0 ? Double.NaN : (System.currentTimeMillis() - t.get()) / 1000.0)
+                .baseUnit("seconds").description("time since the last committed Kafka transaction").register(registry);
+        Gauge.builder("trajeval.pipeline.runs.held", runsHeld, AtomicLong::get)
+                .description("runs scored and waiting for their Kafka commit").register(registry);
+        producerRebuilds = Counter.builder("trajeval.pipeline.producer.rebuilds")
+                .description("transactional producers re-created after a broker fault").register(registry);
+        republished = Counter.builder("trajeval.pipeline.republished")
+                .description("report events re-published from the ledger").register(registry);
     }
 
     /** @return metrics exposed in the Prometheus text format */
@@ -83,6 +104,31 @@ public final class PipelineMetrics {
     /** @return the gauge of consumer lag (records) */
     public AtomicLong consumerLag() {
         return consumerLag;
+    }
+
+    /** @return the gauge of broker reachability (1 or 0) */
+    public AtomicLong brokerReachable() {
+        return brokerReachable;
+    }
+
+    /** @return the time of the last committed transaction (ms since the epoch; 0: none yet) */
+    public AtomicLong lastCommitMillis() {
+        return lastCommitMillis;
+    }
+
+    /** @return the gauge of runs waiting for their commit */
+    public AtomicLong runsHeld() {
+        return runsHeld;
+    }
+
+    /** @return the counter of re-created producers */
+    public Counter producerRebuilds() {
+        return producerRebuilds;
+    }
+
+    /** @return the counter of re-published report events */
+    public Counter republished() {
+        return republished;
     }
 
     /** @return the Prometheus text exposition, or an empty string when not Prometheus-backed */

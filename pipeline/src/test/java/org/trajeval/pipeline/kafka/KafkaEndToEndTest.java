@@ -73,7 +73,7 @@ class KafkaEndToEndTest {
         Set<String> bad = new HashSet<>();
         try (EmbeddedBroker broker = EmbeddedBroker.start(null, 0)) {
             String bs = broker.bootstrapServers();
-            KafkaMode.createTopics(bs, List.of("trajeval.runs", "trajeval.reports", "trajeval.runs.dlq"), 3);
+            BrokerMain.createTopics(bs, List.of("trajeval.runs", "trajeval.reports", "trajeval.runs.dlq"));
             Process a = instance(bs, "a");
             Process b = instance(bs, "b");
             try {

@@ -22,7 +22,10 @@ import org.apache.kafka.server.common.MetadataVersion;
 
 /**
  * A single-node Kafka (KRaft, combined broker + controller) running inside this JVM on
- * 127.0.0.1 with free ports, for tests and {@code --embedded-broker}. The only class that
+ * 127.0.0.1, for tests and the demo (in its own JVM: {@link BrokerMain}; never in the
+ * launcher's runtime). Three listeners: CLIENT (PLAINTEXT unless {@code extra} says otherwise,
+ * e.g. SASL_SSL), INTERNAL (PLAINTEXT, between the broker and itself, and for the test's admin
+ * work such as creating SCRAM users) and CONTROLLER. The only class that
  * touches Kafka's internal server classes ({@code KafkaRaftServer}, the storage
  * {@code Formatter}); they may change between Kafka versions (written against 4.3.1).
  */
@@ -31,12 +34,20 @@ public final class EmbeddedBroker implements AutoCloseable {
     private final Path dataDir;
     private final boolean deleteOnClose;
     private final String bootstrapServers;
+    private final String internalBootstrapServers;
 
-    private EmbeddedBroker(KafkaRaftServer server, Path dataDir, boolean deleteOnClose, String bootstrapServers) {
+    private EmbeddedBroker(KafkaRaftServer server, Path dataDir, boolean deleteOnClose, String bootstrapServers,
+            String internalBootstrapServers) {
         this.server = server;
         this.dataDir = dataDir;
         this.deleteOnClose = deleteOnClose;
         this.bootstrapServers = bootstrapServers;
+        this.internalBootstrapServers = internalBootstrapServers;
+    }
+
+    /** @return host:port of the INTERNAL (PLAINTEXT) listener */
+    public String internalBootstrapServers() {
+        return internalBootstrapServers;
     }
 
     /**
@@ -49,20 +60,38 @@ public final class EmbeddedBroker implements AutoCloseable {
      */
     public static EmbeddedBroker start(Path dataDir, int brokerPort) {
         try {
+            return start(dataDir, brokerPort == 0 ? freePort() : brokerPort, freePort(), freePort(), new Properties());
+        } catch (IOException e) {
+            throw new UncheckedIOException("could not find free ports", e);
+        }
+    }
+
+    /**
+     * Formats {@code dataDir} when it is new and starts the broker on the given ports (a restart
+     * after a kill uses the same ports and folder).
+     *
+     * @param dataDir folder for the broker's logs, or {@code null} for a temporary folder
+     * @param port CLIENT port
+     * @param internalPort INTERNAL (PLAINTEXT) port
+     * @param controllerPort CONTROLLER port
+     * @param extra broker settings added or overridden (listener security, TLS stores, SASL)
+     * @return the running broker
+     */
+    public static EmbeddedBroker start(Path dataDir, int port, int internalPort, int controllerPort, Properties extra) {
+        try {
             boolean temporary = dataDir == null;
             Path dir = temporary ? Files.createTempDirectory("trajeval-kafka-") : dataDir;
             Files.createDirectories(dir);
-            int port = brokerPort == 0 ? freePort() : brokerPort;
-            int controllerPort = freePort();
             Properties p = new Properties();
             p.setProperty("process.roles", "broker,controller");
             p.setProperty("node.id", "1");
             p.setProperty("controller.quorum.voters", "1@127.0.0.1:" + controllerPort);
-            p.setProperty("listeners", "PLAINTEXT://127.0.0.1:" + port + ",CONTROLLER://127.0.0.1:" + controllerPort);
-            p.setProperty("advertised.listeners", "PLAINTEXT://127.0.0.1:" + port);
+            p.setProperty("listeners", "CLIENT://127.0.0.1:" + port + ",INTERNAL://127.0.0.1:" + internalPort
+                    + ",CONTROLLER://127.0.0.1:" + controllerPort);
+            p.setProperty("advertised.listeners", "CLIENT://127.0.0.1:" + port + ",INTERNAL://127.0.0.1:" + internalPort);
             p.setProperty("controller.listener.names", "CONTROLLER");
-            p.setProperty("inter.broker.listener.name", "PLAINTEXT");
-            p.setProperty("listener.security.protocol.map", "PLAINTEXT:PLAINTEXT,CONTROLLER:PLAINTEXT");
+            p.setProperty("inter.broker.listener.name", "INTERNAL");
+            p.setProperty("listener.security.protocol.map", "CLIENT:PLAINTEXT,INTERNAL:PLAINTEXT,CONTROLLER:PLAINTEXT");
             p.setProperty("log.dirs", dir.toAbsolutePath().toString());
             p.setProperty("offsets.topic.replication.factor", "1");
             p.setProperty("offsets.topic.num.partitions", "3");
@@ -84,6 +113,7 @@ public final class EmbeddedBroker implements AutoCloseable {
             p.setProperty("background.threads", "2");
             p.setProperty("num.recovery.threads.per.data.dir", "1");
             p.setProperty("log.flush.interval.messages", "1");
+            p.putAll(extra);
             KafkaConfig config = new KafkaConfig(p);
             if (!Files.exists(dir.resolve("meta.properties"))) {
                 Formatter formatter = new Formatter()
@@ -98,7 +128,7 @@ public final class EmbeddedBroker implements AutoCloseable {
             }
             KafkaRaftServer server = new KafkaRaftServer(config, Time.SYSTEM);
             server.startup();
-            return new EmbeddedBroker(server, dir, temporary, "127.0.0.1:" + port);
+            return new EmbeddedBroker(server, dir, temporary, "127.0.0.1:" + port, "127.0.0.1:" + internalPort);
         } catch (IOException e) {
             throw new UncheckedIOException("could not start the embedded Kafka broker", e);
         } catch (RuntimeException e) {
@@ -123,7 +153,8 @@ public final class EmbeddedBroker implements AutoCloseable {
         }
     }
 
-    private static int freePort() throws IOException {
+    /** @return a free TCP port on 127.0.0.1 (ephemeral range) */
+    static int freePort() throws IOException {
         try (ServerSocket s = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
             s.setReuseAddress(true);
             return s.getLocalPort();
