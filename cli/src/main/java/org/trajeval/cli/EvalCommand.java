@@ -12,6 +12,7 @@ import org.trajeval.core.eval.EvaluationOptions;
 import org.trajeval.core.eval.Evaluator;
 import org.trajeval.core.eval.PlanarProjection;
 import org.trajeval.core.io.LoadedTrajectory;
+import org.trajeval.core.io.OutputGuard;
 import org.trajeval.core.io.TrajectoryFormat;
 import org.trajeval.core.metric.DriftOptions;
 import org.trajeval.core.metric.PairSelection;
@@ -121,7 +122,7 @@ public final class EvalCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "FILE", description = "Write the JSON report to FILE (atomically).")
     Path out;
 
-    @Option(names = "--threads", paramLabel = "N", description = "Threads for reading the two files at once and "
+    @Option(names = "--threads", paramLabel = "N", converter = BoundedOptions.Threads.class, description = "Threads for reading the two files at once and "
             + "for the element-wise passes of the planar evaluation (default: ${DEFAULT-VALUE}; 1 does everything on "
             + "one thread). The numbers do not depend on it.", defaultValue = "2")
     int threads;
@@ -131,6 +132,10 @@ public final class EvalCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
+        if (out != null) {
+            OutputGuard.refuseInputs(out, "--out", java.util.Arrays.asList(reference, estimate, input.refTimes,
+                    input.estTimes));
+        }
         MemoryBudget.check(reference, estimate, Runtime.getRuntime().maxMemory());
         if (convention == Convention.EVO) {
             input.defaultDuplicates = org.trajeval.core.io.DuplicateTimestamps.KEEP;
@@ -140,6 +145,7 @@ public final class EvalCommand implements Callable<Integer> {
             LoadedTrajectory[] pair = work.both(input, reference, estimate);
             LoadedTrajectory ref = pair[0];
             LoadedTrajectory est = pair[1];
+            input.checkCsvOptionsApply(reference, ref, est);
             report = Evaluator.evaluate(ref, est, options(ref, est), work.parallelism());
         }
         // JSON (and Jackson's start-up) only when asked for

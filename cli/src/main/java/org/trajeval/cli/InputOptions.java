@@ -1,6 +1,8 @@
 package org.trajeval.cli;
 
 import java.nio.file.Path;
+import org.trajeval.core.InputException;
+import org.trajeval.core.InputProblem;
 import org.trajeval.core.io.CsvLayout;
 import org.trajeval.core.io.DuplicateTimestamps;
 import org.trajeval.core.io.LoadedTrajectory;
@@ -28,7 +30,7 @@ public final class InputOptions {
             description = "Format of the estimate when the two differ.")
     TrajectoryFormat estFormat;
 
-    @Option(names = "--time-unit", paramLabel = "s|ms|us|ns", defaultValue = "s",
+    @Option(names = "--time-unit", paramLabel = "s|ms|us|ns",
             converter = Enums.TimeUnitConverter.class, description = "Unit of CSV timestamps (default: s).")
     TimeUnit timeUnit;
 
@@ -96,8 +98,44 @@ public final class InputOptions {
         return o;
     }
 
-    /** Reads a trajectory with these options. */
+    /**
+     * Reads a trajectory with these options.
+     *
+     * @throws InputException ({@link InputProblem#INVALID_OPTION}) when a times file is given for a file that is
+     *     not KITTI
+     */
     public LoadedTrajectory read(Path file, boolean reference) {
-        return TrajectoryReader.read(file, readOptions(reference));
+        LoadedTrajectory t = TrajectoryReader.read(file, readOptions(reference));
+        String source = file.toString();
+        Path times = reference ? refTimes : estTimes;
+        if (times != null && t.format() != TrajectoryFormat.KITTI) {
+            throw notApplicable(source, reference ? "--ref-times" : "--est-times", times.toString(), "KITTI", t);
+        }
+        return t;
+    }
+
+    /**
+     * Refuses CSV layout options ({@code --time-unit}, {@code --columns}, {@code --delimiter}) when neither file
+     * was read as CSV: they would be silently ignored.
+     *
+     * @throws InputException ({@link InputProblem#INVALID_OPTION}) naming the option and the formats read
+     */
+    public void checkCsvOptionsApply(Path reference, LoadedTrajectory ref, LoadedTrajectory est) {
+        if (ref.format() == TrajectoryFormat.CSV || est.format() == TrajectoryFormat.CSV) {
+            return;
+        }
+        for (String[] given : new String[][] {{"--time-unit", timeUnit == null ? null : timeUnit.id()},
+            {"--columns", columnsText}, {"--delimiter", delimiter == null ? null : delimiter.toString()}}) {
+            if (given[1] != null) {
+                throw notApplicable(reference.toString(), given[0], given[1], "CSV", ref);
+            }
+        }
+    }
+
+    private static InputException notApplicable(String source, String option, String value, String format,
+            LoadedTrajectory t) {
+        return new InputException(source, 0, option, InputProblem.INVALID_OPTION, option + " applies to " + format
+                + " files only, and this file was read as " + t.format().id() + " (" + t.formatReason()
+                + "); drop the option or pass --format", value);
     }
 }

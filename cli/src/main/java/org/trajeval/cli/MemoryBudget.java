@@ -51,6 +51,9 @@ final class MemoryBudget {
     /** Estimated number of lines: size / mean length of the first 64 KiB's lines; 0 when unreadable. */
     static long estimatePoses(Path p) {
         try {
+            if (!Files.isRegularFile(p)) {
+                return 0; // a pipe or device: never opened here (a FIFO would block); the reader refuses it
+            }
             long size = Files.size(p);
             byte[] head = new byte[65536];
             int n;

@@ -2,6 +2,7 @@ package org.trajeval.cli;
 
 import java.io.PrintWriter;
 import org.trajeval.core.InputException;
+import org.trajeval.core.InputText;
 import org.trajeval.core.Version;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -41,7 +42,7 @@ public final class TrajevalCommand implements Runnable {
 
     private static int usageError(CommandLine.ParameterException ex, String[] args) {
         PrintWriter err = ex.getCommandLine().getErr();
-        err.println("trajeval: " + ex.getMessage());
+        err.println("trajeval: " + InputText.escape(ex.getMessage()));
         err.println("Try '" + ex.getCommandLine().getCommandSpec().qualifiedName() + " --help' for usage.");
         err.flush();
         return ExitCodes.BAD_INPUT;
@@ -55,14 +56,14 @@ public final class TrajevalCommand implements Runnable {
             boolean verbose = isVerbose(parsed);
             if (ex instanceof InputException || ex instanceof IllegalArgumentException
                     || ex instanceof java.io.UncheckedIOException) {
-                err.println("trajeval: " + ex.getMessage());
+                err.println("trajeval: " + InputText.escape(ex.getMessage()));
                 if (verbose) {
                     ex.printStackTrace(err);
                 }
                 err.flush();
                 return ExitCodes.BAD_INPUT;
             }
-            err.println("trajeval: internal error: " + ex);
+            err.println("trajeval: internal error: " + InputText.escape(String.valueOf(ex)));
             if (verbose) {
                 ex.printStackTrace(err);
             } else {

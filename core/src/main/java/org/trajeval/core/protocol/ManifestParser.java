@@ -3,7 +3,6 @@ package org.trajeval.core.protocol;
 import com.fasterxml.jackson.core.JacksonException;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
-import com.fasterxml.jackson.dataformat.yaml.YAMLFactory;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
@@ -25,6 +24,8 @@ import org.trajeval.core.assoc.AssociationMethod;
 import org.trajeval.core.assoc.OverlapPolicy;
 import org.trajeval.core.eval.Convention;
 import org.trajeval.core.eval.EvaluationOptions;
+import org.trajeval.core.io.StrictMappers;
+import org.trajeval.core.io.TextFiles;
 import org.trajeval.core.metric.DriftOptions;
 import org.trajeval.core.metric.PairSelection;
 import org.trajeval.core.metric.RpeUnit;
@@ -59,7 +60,10 @@ public final class ManifestParser {
     private static final Pattern PLACEHOLDER = Pattern.compile("\\{([^}]*)}");
     private static final Set<String> PLACEHOLDERS = Set.of("method", "sequence", "seed");
 
-    private final ObjectMapper yaml = new ObjectMapper(new YAMLFactory());
+    /** Largest manifest read (bytes): 16 MiB, far above any real suite. */
+    static final long MAX_MANIFEST_BYTES = 16L << 20;
+
+    private final ObjectMapper yaml = StrictMappers.yaml();
 
     /**
      * Reads and checks the manifest at {@code file}.
@@ -68,16 +72,7 @@ public final class ManifestParser {
      */
     public SuiteManifest read(Path file) {
         String source = file.toString();
-        String text;
-        try {
-            text = Files.readString(file);
-        } catch (NoSuchFileException e) {
-            throw new InputException(source, 0, null, InputProblem.UNREADABLE, "manifest file does not exist", null, e);
-        } catch (IOException e) {
-            throw new InputException(source, 0, null, InputProblem.UNREADABLE,
-                    "manifest could not be read: " + e.getMessage(), null, e);
-        }
-        return parse(text, source);
+        return parse(TextFiles.readUtf8(file, "manifest", MAX_MANIFEST_BYTES), source);
     }
 
     /**

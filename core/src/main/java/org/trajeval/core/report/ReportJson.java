@@ -17,7 +17,7 @@ import java.nio.file.attribute.PosixFilePermissions;
 
 /** Reads and writes reports as JSON (Jackson stays behind this package). */
 public final class ReportJson {
-    private static final ObjectMapper MAPPER = new ObjectMapper()
+    private static final ObjectMapper MAPPER = org.trajeval.core.io.StrictMappers.json()
             .enable(SerializationFeature.INDENT_OUTPUT)
             .disable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES);
 
