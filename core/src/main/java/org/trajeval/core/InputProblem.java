@@ -40,6 +40,8 @@ public enum InputProblem {
     DEGENERATE_ALIGNMENT,
     /** An option value is out of its allowed range or inconsistent with another. */
     INVALID_OPTION,
+    /** A value lies beyond its documented bound (a position beyond 1e9 m). */
+    OUT_OF_RANGE,
     /** The input exceeds a configured size or pose limit. */
     TOO_LARGE,
     /** A manifest or configuration key is unknown, missing or inconsistent. */

@@ -37,8 +37,11 @@ public final class OutputGuard {
             if (Files.exists(a) && Files.exists(b)) {
                 return Files.isSameFile(a, b);
             }
+            if (a.toAbsolutePath().normalize().equals(b.toAbsolutePath().normalize())) {
+                return true;
+            }
             if (!Files.exists(b)) {
-                return a.toAbsolutePath().normalize().equals(b.toAbsolutePath().normalize());
+                return false;
             }
             Path parent = a.toAbsolutePath().getParent();
             if (parent == null || !Files.isDirectory(parent) || a.getFileName() == null) {

@@ -73,12 +73,21 @@ public final class TextFiles {
             }
             throw notUtf8(source, line, what + " must be UTF-8 text, byte " + at + " (0x"
                     + String.format("%02X", bytes[at] & 0xff) + ") is not"
-                    + (bytes[at] == 0 ? ": it looks like a binary file" : " (Latin-1 or another encoding?)"), null);
+                    + (hasNul(bytes) ? ": it looks like a binary file" : " (Latin-1 or another encoding?)"), null);
         }
         d.flush(out);
         out.flip();
         String text = out.toString();
         return text.startsWith("\uFEFF") ? text.substring(1) : text;
+    }
+
+    private static boolean hasNul(byte[] bytes) {
+        for (byte b : bytes) {
+            if (b == 0) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** @return "UTF-16 (byte-order mark FF FE)" or similar when the head shows UTF-16, else {@code null} */
