@@ -141,13 +141,21 @@ public final class EvalCommand implements Callable<Integer> {
             input.defaultDuplicates = org.trajeval.core.io.DuplicateTimestamps.KEEP;
         }
         EvaluationReport report;
+        java.util.List<String> notices;
         try (EvalThreads work = new EvalThreads(threads)) {
             LoadedTrajectory[] pair = work.both(input, reference, estimate);
             LoadedTrajectory ref = pair[0];
             LoadedTrajectory est = pair[1];
             input.checkCsvOptionsApply(reference, ref, est);
-            report = Evaluator.evaluate(ref, est, options(ref, est), work.parallelism());
+            EvaluationOptions options = options(ref, est);
+            report = Evaluator.evaluate(ref, est, options, work.parallelism());
+            notices = EvalNotices.of(report, options, nToAlign);
         }
+        PrintWriter err = spec.commandLine().getErr();
+        for (String n : notices) {
+            err.println("trajeval: warning: " + n);
+        }
+        err.flush();
         // JSON (and Jackson's start-up) only when asked for
         String jsonText = json || out != null ? ReportJson.toJson(report) : null;
         if (out != null) {
