@@ -61,7 +61,7 @@ class DirectoryHardeningTest {
             assertEquals(new DrainSummary(0, 0, 1), h.service.drain());
             JsonNode err = JSON.readTree(h.layout.failed().resolve("r1.pair.error.json").toFile());
             String message = err.get("message").asText();
-            assertTrue(message.startsWith(h.layout.failed().resolve("r1.pair").resolve("r1.est.csv") + ":3:"), message);
+            assertTrue(message.contains("r1.est.csv:3:"), message);
             assertFalse(message.contains("processing"), message);
             assertTrue(Files.exists(h.layout.failed().resolve("r1.pair").resolve("r1.est.csv")), "the file named exists");
             assertEquals(List.of("r1.pair", "r1.pair.error.json"), names(h.layout.failed()));
