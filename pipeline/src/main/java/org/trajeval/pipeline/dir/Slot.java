@@ -67,8 +67,11 @@ final class Slot implements AutoCloseable {
             ch.close();
             deleteTree(tmp);
             if (e instanceof FileAlreadyExistsException || e instanceof DirectoryNotEmptyException
-                    || Files.exists(dir, LinkOption.NOFOLLOW_LINKS)) {
-                return null;
+                    || Files.exists(dir, LinkOption.NOFOLLOW_LINKS) || "Directory not empty".equals(
+                            e instanceof java.nio.file.FileSystemException fs ? fs.getReason() : null)
+                    || unit.payloadNames().stream().noneMatch(n -> Files.exists(incoming.resolve(n),
+                            LinkOption.NOFOLLOW_LINKS))) {
+                return null; // the other claimer may even have finished and moved the slot on already
             }
             throw e;
         }
