@@ -93,6 +93,10 @@ final class Slot implements AutoCloseable {
         if (!Files.isDirectory(dir, LinkOption.NOFOLLOW_LINKS)) {
             return null;
         }
+        if (name.startsWith(CLAIMING) && Files.getLastModifiedTime(dir).toMillis()
+                > System.currentTimeMillis() - 60_000) {
+            return null; // a claim another instance may be making right now (its lock may not be taken yet)
+        }
         FileChannel ch;
         try {
             ch = FileChannel.open(dir.resolve(LOCK), StandardOpenOption.CREATE, StandardOpenOption.WRITE);
