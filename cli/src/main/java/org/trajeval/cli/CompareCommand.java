@@ -12,6 +12,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.Callable;
+import org.trajeval.core.io.TextFiles;
 import org.trajeval.core.protocol.MethodRanking;
 import org.trajeval.core.protocol.SuiteAnalysis;
 import org.trajeval.core.report.ReportJson;
@@ -40,6 +41,9 @@ import picocli.CommandLine.Spec;
         exitCodeList = {"0:success", "1:internal error (a bug; rerun with --verbose)",
             "2:bad input (unreadable report, unknown method, nothing in common)"})
 public final class CompareCommand implements Callable<Integer> {
+    /** Largest suite report read (bytes). */
+    static final long MAX_REPORT_BYTES = 1L << 30;
+
     @Spec
     CommandSpec spec;
 
@@ -140,11 +144,7 @@ public final class CompareCommand implements Callable<Integer> {
     }
 
     private static SuiteReport read(Path p) {
-        try {
-            return SuiteReportFiles.parse(Files.readString(p), p.toString());
-        } catch (IOException e) {
-            throw new UncheckedIOException("could not read " + p, e);
-        }
+        return SuiteReportFiles.parse(TextFiles.readUtf8(p, "suite report", MAX_REPORT_BYTES), p.toString());
     }
 
     /** The named method, or the one at {@code index} when unnamed and the report has exactly the methods needed. */

@@ -32,7 +32,7 @@ public final class DemoCommand implements Callable<Integer> {
             description = "Seed of the data and of the statistics (default: ${DEFAULT-VALUE}).")
     long seed;
 
-    @Option(names = "--threads", paramLabel = "N", description = "Worker threads (default: the number of cores).")
+    @Option(names = "--threads", paramLabel = "N", converter = BoundedOptions.Threads.class, description = "Worker threads (default: the number of cores).")
     Integer threads;
 
     @Option(names = "--verbose", description = "Print stack traces of errors.")

@@ -5,14 +5,19 @@ import java.nio.file.Path;
 import java.nio.file.Files;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Objects;
 import java.util.concurrent.Callable;
+import java.util.stream.Stream;
+import org.trajeval.core.eval.EvaluationOptions;
 import org.trajeval.core.eval.Evaluator;
 import org.trajeval.core.io.LoadedTrajectory;
+import org.trajeval.core.io.OutputGuard;
 import org.trajeval.core.io.ReadOptions;
 import org.trajeval.core.options.DataKind;
 import org.trajeval.core.options.FileRole;
 import org.trajeval.core.io.bag.BagSource;
 import org.trajeval.core.io.bag.Bags;
+import org.trajeval.core.options.FormatApplicability;
 import org.trajeval.core.options.PathResolver;
 import org.trajeval.core.options.Setting;
 import org.trajeval.core.options.SettingText;
@@ -63,7 +68,7 @@ public final class EvalCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "FILE", description = "Write the JSON report to FILE (atomically).")
     Path out;
 
-    @Option(names = "--threads", paramLabel = "N", description = "Threads for reading the two files at once and "
+    @Option(names = "--threads", paramLabel = "N", converter = BoundedOptions.Threads.class, description = "Threads for reading the two files at once and "
             + "for the element-wise passes of the planar evaluation (default: ${DEFAULT-VALUE}; 1 does everything on "
             + "one thread). The numbers do not depend on it.", defaultValue = "2")
     int threads;
@@ -85,14 +90,19 @@ public final class EvalCommand implements Callable<Integer> {
             estimate = reference;
         }
         estimate = bagTopic(estimate, Setting.EST_TOPIC, "EST", given);
-        MemoryBudget.check(reference, estimate, Runtime.getRuntime().maxMemory());
         SettingValues settings = SettingValues.of(given, null);
+        if (out != null) {
+            OutputGuard.refuseInputs(out, "--out", Stream.of(reference, estimate, path(settings, Setting.REF_TIMES),
+                    path(settings, Setting.EST_TIMES)).filter(Objects::nonNull).toList());
+        }
+        MemoryBudget.check(reference, estimate, Runtime.getRuntime().maxMemory());
         ReadOptions limits = ReadOptions.defaults();
         if (maxPoses != null || maxBytes != null) {
             limits = limits.withLimits(maxBytes != null ? maxBytes : limits.maxBytes(),
                     maxPoses != null ? maxPoses : limits.maxPoses());
         }
         EvaluationReport report;
+        List<String> notices;
         try (EvalThreads work = new EvalThreads(threads)) {
             LoadedTrajectory[] pair = work.both(
                     SettingsResolver.readOptions(settings, FileRole.REFERENCE, limits, PathResolver.asWritten()),
@@ -101,9 +111,17 @@ public final class EvalCommand implements Callable<Integer> {
                     estimate);
             LoadedTrajectory ref = pair[0];
             LoadedTrajectory est = pair[1];
-            report = Evaluator.evaluate(ref, est, SettingsResolver.evaluationOptions(settings,
-                    DataKind.of(ref.trajectory(), est.trajectory())), work.parallelism());
+            FormatApplicability.check(settings, ref, reference.toString(), est, estimate.toString());
+            EvaluationOptions options = SettingsResolver.evaluationOptions(settings,
+                    DataKind.of(ref.trajectory(), est.trajectory()));
+            report = Evaluator.evaluate(ref, est, options, work.parallelism());
+            notices = EvalNotices.of(report, options, (Integer) settings.get(Setting.N_TO_ALIGN));
         }
+        PrintWriter err = spec.commandLine().getErr();
+        for (String n : notices) {
+            err.println("trajeval: warning: " + n);
+        }
+        err.flush();
         // JSON (and Jackson's start-up) only when asked for
         String jsonText = json || out != null ? ReportJson.toJson(report) : null;
         if (out != null) {
@@ -137,5 +155,9 @@ public final class EvalCommand implements Callable<Integer> {
         }
         given.add(new SettingText(topic.key(), bag.topic(), name));
         return bag.path();
+    }
+
+    private static Path path(SettingValues s, Setting setting) {
+        return s.has(setting) ? Path.of((String) s.get(setting)) : null;
     }
 }

@@ -55,6 +55,9 @@ final class MemoryBudget {
             return 0; // a bag's size says nothing of its poses; the bag readers bound their own memory
         }
         try {
+            if (!Files.isRegularFile(p)) {
+                return 0; // a pipe or device: never opened here (a FIFO would block); the reader refuses it
+            }
             long size = Files.size(p);
             byte[] head = new byte[65536];
             int n;

@@ -11,11 +11,13 @@ public final class StatisticsOptions {
     long seed;
 
     @Option(names = "--confidence", paramLabel = "LEVEL", defaultValue = "0.95",
+            converter = BoundedOptions.Confidence.class,
             description = "Confidence level of every interval (default: ${DEFAULT-VALUE}).")
     double confidence;
 
     @Option(names = "--resamples", paramLabel = "B", defaultValue = "4000",
-            description = "Bootstrap resamples (default: ${DEFAULT-VALUE}).")
+            converter = BoundedOptions.Resamples.class,
+            description = "Bootstrap resamples, 100 to 1000000 (default: ${DEFAULT-VALUE}).")
     int resamples;
 
     /** @throws org.trajeval.core.InputException on a level outside (0, 1) or fewer than 100 resamples */

@@ -37,7 +37,7 @@ public final class SuiteCommand implements Callable<Integer> {
     @picocli.CommandLine.Mixin
     StatisticsOptions stats = new StatisticsOptions();
 
-    @Option(names = "--threads", paramLabel = "N", description = "Worker threads (default: the number of cores).")
+    @Option(names = "--threads", paramLabel = "N", converter = BoundedOptions.Threads.class, description = "Worker threads (default: the number of cores).")
     Integer threads;
 
     @Option(names = "--allow-leakage", description = "Run despite split leakage; the report flags it.")

@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import org.trajeval.core.io.OutputGuard;
 import org.trajeval.core.protocol.RunEngine;
 import org.trajeval.core.protocol.SuiteRunner;
 import org.trajeval.core.report.SuiteReport;
@@ -23,6 +24,10 @@ final class SuiteOutput {
             PrintWriter err) {
         if (threads < 1) {
             throw UsageProblem.of("--threads", "--threads must be at least 1", String.valueOf(threads));
+        }
+        for (String name : List.of(SuiteReportFiles.JSON, SuiteReportFiles.RUNS_CSV, SuiteReportFiles.METHODS_CSV,
+                SuiteReportFiles.COMPARISONS_CSV, "report.html")) {
+            OutputGuard.refuseInputs(out.resolve(name), "--out", List.of(manifest));
         }
         ExecutorService pool = Executors.newFixedThreadPool(threads);
         try {

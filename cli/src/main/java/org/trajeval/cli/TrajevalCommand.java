@@ -2,6 +2,7 @@ package org.trajeval.cli;
 
 import java.io.PrintWriter;
 import org.trajeval.core.InputException;
+import org.trajeval.core.InputText;
 import org.trajeval.core.Version;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -42,7 +43,7 @@ public final class TrajevalCommand implements Runnable {
 
     private static int usageError(CommandLine.ParameterException ex, String[] args) {
         PrintWriter err = ex.getCommandLine().getErr();
-        err.println("trajeval: " + ex.getMessage());
+        err.println("trajeval: " + InputText.escape(ex.getMessage()));
         err.println("Try '" + ex.getCommandLine().getCommandSpec().qualifiedName() + " --help' for usage.");
         err.flush();
         return ExitCodes.BAD_INPUT;
@@ -57,14 +58,14 @@ public final class TrajevalCommand implements Runnable {
             // bad input is an InputException (the file, line or option it names) or a file that cannot be
             // read or written; anything else, IllegalArgumentException included, is a bug of ours
             if (ex instanceof InputException || ex instanceof java.io.UncheckedIOException) {
-                err.println("trajeval: " + ex.getMessage());
+                err.println("trajeval: " + InputText.escape(ex.getMessage()));
                 if (verbose) {
                     ex.printStackTrace(err);
                 }
                 err.flush();
                 return ExitCodes.BAD_INPUT;
             }
-            err.println("trajeval: internal error: " + ex);
+            err.println("trajeval: internal error: " + InputText.escape(String.valueOf(ex)));
             if (verbose) {
                 ex.printStackTrace(err);
             } else {

@@ -8,6 +8,8 @@ import java.util.Objects;
  * (one line) without a stack trace.
  *
  * <p>Example message: {@code runs/0412/estimate.csv:57: column 'yaw' must be a finite number (rad), found "nan"}.
+ * The message is one printable line: control characters copied from the input are escaped
+ * ({@link InputText#escape}); the typed fields keep the text as read.
  */
 public class InputException extends RuntimeException {
     private static final long serialVersionUID = 1L;
@@ -57,7 +59,7 @@ public class InputException extends RuntimeException {
         if (found != null) {
             sb.append(", found \"").append(found.length() > 60 ? found.substring(0, 60) + "..." : found).append('"');
         }
-        return sb.toString();
+        return InputText.escape(sb.toString());
     }
 
     /** @return the file or source name, or {@code null} */

@@ -8,6 +8,8 @@ public enum InputProblem {
     EMPTY,
     /** A required column is missing from the header. */
     MISSING_COLUMN,
+    /** A column name appears twice: in the header, or among the configured names (which would read one column twice). */
+    DUPLICATE_COLUMN,
     /** A row has fewer or more fields than the format needs. */
     WRONG_FIELD_COUNT,
     /** A field is not a number. */
@@ -32,10 +34,14 @@ public enum InputProblem {
     SUSPICIOUS_TIME_UNIT,
     /** The format could not be recognised. */
     UNKNOWN_FORMAT,
+    /** Text that is not UTF-8 (UTF-16, Latin-1, binary); the message names the encoding seen and where. */
+    NOT_UTF8,
     /** The alignment problem is degenerate (e.g. collinear or coincident points). */
     DEGENERATE_ALIGNMENT,
     /** An option value is out of its allowed range or inconsistent with another. */
     INVALID_OPTION,
+    /** A value lies beyond its documented bound (a position beyond 1e9 m). */
+    OUT_OF_RANGE,
     /** The input exceeds a configured size or pose limit. */
     TOO_LARGE,
     /** A manifest or configuration key is unknown, missing or inconsistent. */

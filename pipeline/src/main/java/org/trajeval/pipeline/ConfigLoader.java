@@ -7,7 +7,8 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.PropertyNamingStrategies;
 import com.fasterxml.jackson.databind.exc.UnrecognizedPropertyException;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import com.fasterxml.jackson.dataformat.yaml.YAMLFactory;
+import org.trajeval.core.io.StrictMappers;
+import org.trajeval.core.io.TextFiles;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -28,7 +29,7 @@ public final class ConfigLoader {
     /** Prefix of the environment variables that override settings. */
     public static final String ENV_PREFIX = "TRAJEVAL_PIPELINE_";
 
-    private static final ObjectMapper YAML = new ObjectMapper(new YAMLFactory())
+    private static final ObjectMapper YAML = StrictMappers.yaml()
             .setPropertyNamingStrategy(PropertyNamingStrategies.SNAKE_CASE)
             .enable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES);
 
@@ -46,7 +47,7 @@ public final class ConfigLoader {
         String source = file == null ? "configuration" : file.toString();
         if (file != null) {
             try {
-                JsonNode fromFile = YAML.readTree(Files.readString(file));
+                JsonNode fromFile = YAML.readTree(TextFiles.readUtf8(file, "configuration", 1L << 20));
                 if (fromFile != null && !fromFile.isNull() && !fromFile.isMissingNode()) {
                     if (!fromFile.isObject()) {
                         throw new InputException(source, 0, null, InputProblem.INVALID_CONFIGURATION,
@@ -58,8 +59,6 @@ public final class ConfigLoader {
                 throw new InputException(source, e.getLocation() == null ? 0 : e.getLocation().getLineNr(), null,
                         InputProblem.INVALID_CONFIGURATION, "the configuration must be valid YAML: " + e.getOriginalMessage(),
                         null, e);
-            } catch (IOException e) {
-                throw new InputException(source, 0, null, InputProblem.UNREADABLE, "could not read: " + e, null, e);
             }
         }
         for (String key : leafKeys(tree, "")) {

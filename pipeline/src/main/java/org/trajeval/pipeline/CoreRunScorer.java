@@ -8,6 +8,7 @@ import org.trajeval.core.io.ReadOptions;
 import org.trajeval.core.io.TrajectoryReader;
 import org.trajeval.core.options.DataKind;
 import org.trajeval.core.options.FileRole;
+import org.trajeval.core.options.FormatApplicability;
 import org.trajeval.core.options.PathResolver;
 import org.trajeval.core.options.SettingsResolver;
 import org.trajeval.core.report.EvaluationReport;
@@ -32,6 +33,7 @@ public final class CoreRunScorer implements RunScorer {
                 readOptions(job, FileRole.REFERENCE, maxFileBytes)), job);
         LoadedTrajectory est = named(TrajectoryReader.read(job.estimate(),
                 readOptions(job, FileRole.ESTIMATE, maxFileBytes)), job);
+        FormatApplicability.check(job.settings(), ref, ref.source(), est, est.source());
         return Evaluator.evaluate(ref, est, SettingsResolver.evaluationOptions(job.settings(),
                 DataKind.of(ref.trajectory(), est.trajectory())));
     }

@@ -37,7 +37,9 @@ import picocli.CommandLine.Option;
         exitCodeList = {"0:success (watch --drain: every bundle succeeded)", "1:internal error",
             "2:bad configuration or usage", "4:watch --drain: some bundles were put in failed/",
             "5:kafka: no broker answered within --startup-timeout (send, tail: within 60 s)",
-            "6:kafka: the broker refused this client (credentials, TLS certificate, permissions)"})
+            "6:kafka: the broker refused this client (credentials, TLS certificate, permissions)",
+            "7:watch --drain: work left unfinished because the service's own disk or folders failed (full, "
+                + "read-only); the bundles stay in processing/ or incoming/ and are retried at the next start"})
 public final class PipelineCommand implements Runnable {
     /** Exit code of {@code watch --drain} when some bundles failed. */
     public static final int SOME_FAILED = 4;
@@ -153,7 +155,8 @@ public final class PipelineCommand implements Runnable {
         @CommandLine.Spec
         CommandLine.Model.CommandSpec spec;
 
-        @Option(names = "--drain", description = "Process every complete bundle present, then exit (0: all succeeded, 4: some failed).")
+        @Option(names = "--drain", description = "Process every complete bundle present, then exit (0: all succeeded, 4: some failed, "
+                + "7: work left unfinished: disk full or a read-only folder).")
         boolean drain;
 
         @Override
@@ -193,7 +196,8 @@ public final class PipelineCommand implements Runnable {
                     // SIGTERM: the hook is running and waits for us
                 }
                 PrintWriter out = spec.commandLine().getOut();
-                out.printf("reported=%d duplicates=%d failed=%d%n", s.reported(), s.duplicates(), s.failed());
+                out.printf("reported=%d duplicates=%d failed=%d unfinished=%d%n", s.reported(), s.duplicates(), s.failed(),
+                        s.unfinished());
                 out.flush();
                 return drain ? s.exitCode() : 0;
             }

@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.time.Clock;
 import java.time.Instant;
 import java.util.Optional;
+import java.util.function.BiConsumer;
 import org.trajeval.core.Version;
 import org.trajeval.core.report.EvaluationReport;
 import org.trajeval.core.report.ReportJson;
@@ -24,6 +25,7 @@ public final class ReportStore {
     private final Path reportsDir;
     private final Ledger ledger;
     private final Clock clock;
+    private final BiConsumer<Path, String> writer;
 
     /**
      * @param reportsDir folder of the report files
@@ -31,9 +33,18 @@ public final class ReportStore {
      * @param clock clock for {@code processed_at}
      */
     public ReportStore(Path reportsDir, Ledger ledger, Clock clock) {
+        this(reportsDir, ledger, clock, ReportJson::writeAtomically);
+    }
+
+    /**
+     * As above, with the function that writes a report file atomically (tests inject storage faults here:
+     * it throws {@link java.io.UncheckedIOException} when the file cannot be written).
+     */
+    public ReportStore(Path reportsDir, Ledger ledger, Clock clock, BiConsumer<Path, String> writer) {
         this.reportsDir = reportsDir;
         this.ledger = ledger;
         this.clock = clock;
+        this.writer = writer;
     }
 
     /** @return the report file of a run version */
@@ -71,7 +82,7 @@ public final class ReportStore {
                     Version.TOOL, m.runId(), m.robotId(), m.sequence(), m.method(), m.seed(), version,
                     hash.content(), hash.reference(), hash.estimate(), job.source(), now.toString(), evaluation);
             Path file = reportFile(m.runId(), version);
-            ReportJson.writeAtomically(file, ReportJson.toJson(report));
+            writer.accept(file, ReportJson.toJson(report));
             view.append(new LedgerEntry(m.runId(), hash.content(), version, now.toEpochMilli(), job.source()));
             return new RunResult(Outcome.REPORTED, m.runId(), version, file, null, null);
         });

@@ -28,7 +28,9 @@ public final class RunProcessor {
     /**
      * Processes a run.
      *
-     * @throws StageException when the run cannot be scored or filed (with stage and reason)
+     * @throws StageException when the run cannot be scored (with stage and reason)
+     * @throws EnvironmentException when the report or the ledger cannot be written (disk full, read-only
+     *     folder): the run is not at fault and must be retried
      */
     public RunResult process(RunJob job) {
         ContentHash hash;
@@ -54,6 +56,10 @@ public final class RunProcessor {
         }
         try {
             return store.commit(job, hash, evaluation);
+        } catch (java.io.UncheckedIOException e) {
+            throw EnvironmentException.of(e);
+        } catch (EnvironmentException e) {
+            throw e;
         } catch (RuntimeException e) {
             throw new StageException(RunFailure.of(Stage.REPORT, e), e);
         }

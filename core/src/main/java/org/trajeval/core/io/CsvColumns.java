@@ -33,6 +33,14 @@ record CsvColumns(int[] index, String[] names, String[] units, int fieldCount) {
                         String.join(String.valueOf(layout.delimiter()), header));
             }
         }
+        for (int k = 0; k < 4; k++) {
+            if (header.lastIndexOf(names[k]) != index[k]) {
+                throw new InputException(source, line, names[k], InputProblem.DUPLICATE_COLUMN,
+                        "the header must name the column '" + names[k] + "' once, it names it in fields "
+                                + (index[k] + 1) + " and " + (header.lastIndexOf(names[k]) + 1),
+                        String.join(String.valueOf(layout.delimiter()), header));
+            }
+        }
         return new CsvColumns(index, names, units, header.size());
     }
 

@@ -51,7 +51,7 @@ final class CsvTrajectoryReader {
             rows.select(columns.index(), columns.names(), columns.units());
             rows.requireFields(columns.fieldCount(), CsvColumns.describe(header, layout.delimiter()));
             PoseBuffer poses = new PoseBuffer(source, layout.timeColumn(), 4, options.order(),
-                    options.duplicates(), options.maxPoses());
+                    options.duplicates(), options.maxPoses()).positions(layout.xColumn(), layout.yColumn());
             poses.sizeFrom(lines);
             TimeUnit unit = layout.timeUnit();
             double[] row = new double[4];

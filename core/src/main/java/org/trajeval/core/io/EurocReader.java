@@ -25,7 +25,7 @@ final class EurocReader {
             rows.select(new int[] {0, 1, 2, 3, 4, 5, 6, 7}, NAMES, UNITS);
             rows.requireAtLeastFields(8, "timestamp [ns], p_x, p_y, p_z [m], q_w, q_x, q_y, q_z, ...");
             PoseBuffer poses = new PoseBuffer(source, "timestamp", 8, options.order(),
-                    options.duplicates(), options.maxPoses());
+                    options.duplicates(), options.maxPoses()).positions("p_x", "p_y", "p_z");
             poses.sizeFrom(lines);
             double[] row = new double[8];
             double tolerance = options.quaternionTolerance();

@@ -34,7 +34,7 @@ final class KittiReader {
             rows.select(new int[] {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}, NAMES, UNITS);
             rows.requireFields(12, "r11 r12 r13 tx r21 r22 r23 ty r31 r32 r33 tz, separated by spaces");
             PoseBuffer poses = new PoseBuffer(source, "index", COLUMNS, TimestampOrder.REFUSE_UNSORTED,
-                    options.maxPoses());
+                    options.maxPoses()).positions("tx", "ty", "tz");
             poses.sizeFrom(lines);
             double[] in = new double[12];
             double[] r = new double[9];

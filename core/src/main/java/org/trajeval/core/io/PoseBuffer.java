@@ -20,6 +20,12 @@ final class PoseBuffer {
     static final int DUPLICATE = 2;
 
     private static final int INITIAL_CAPACITY = 1024;
+    /**
+     * Largest accepted |position| (m): 1e9 m is 2.6 times the Moon's distance, which no robot
+     * needs, and keeps every squared error and sum of squares far from overflow (1e18 per pose).
+     */
+    static final double MAX_POSITION_M = 1e9;
+    private static final String[] NO_NAMES = {};
 
     private final String source;
     private final String timeColumn;
@@ -32,6 +38,7 @@ final class PoseBuffer {
     private long lastLine;
     private ByteLines progress;
     private final boolean keepDuplicates;
+    private String[] positionNames = NO_NAMES;
 
     /**
      * @param source file name for messages
@@ -62,6 +69,13 @@ final class PoseBuffer {
      * @throws InputException when the pose limit is exceeded
      */
     int add(double[] row, long line) {
+        for (int c = 0; c < positionNames.length; c++) {
+            if (!(Math.abs(row[c + 1]) <= MAX_POSITION_M)) {
+                throw new InputException(source, line, positionNames[c], InputProblem.OUT_OF_RANGE,
+                        "column '" + positionNames[c] + "' must be a position (m) within +-1e9 m",
+                        Double.toString(row[c + 1]));
+            }
+        }
         double t = row[0];
         if (lines == null && n > 0 && !(t > lastT) && !(keepDuplicates && t == lastT)) {
             return t < lastT ? DECREASING : DUPLICATE;
@@ -80,6 +94,17 @@ final class PoseBuffer {
         lastT = t;
         lastLine = line;
         return ACCEPTED;
+    }
+
+    /**
+     * Bounds the positions: columns 1, 2, ... (named {@code names} in messages) must lie within
+     * {@link #MAX_POSITION_M}; {@link #add} refuses a pose beyond it with {@link InputProblem#OUT_OF_RANGE}.
+     *
+     * @return this buffer
+     */
+    PoseBuffer positions(String... names) {
+        this.positionNames = names.clone();
+        return this;
     }
 
     /**

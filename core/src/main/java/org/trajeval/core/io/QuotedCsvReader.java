@@ -75,7 +75,7 @@ final class QuotedCsvReader {
         long headerLine = parser.getCurrentLineNumber();
         CsvColumns columns = CsvColumns.locate(header, layout, source, headerLine);
         PoseBuffer poses = new PoseBuffer(source, layout.timeColumn(), 4, options.order(),
-                    options.duplicates(), options.maxPoses());
+                    options.duplicates(), options.maxPoses()).positions(layout.xColumn(), layout.yColumn());
         TimeUnit unit = layout.timeUnit();
         double[] row = new double[4];
         CSVRecord record;

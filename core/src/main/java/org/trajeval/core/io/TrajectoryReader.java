@@ -68,6 +68,13 @@ public final class TrajectoryReader {
                 throw new InputException(source, 0, null, InputProblem.UNREADABLE,
                         "this is a directory, a trajectory file was expected", null);
             }
+            if (Files.exists(path) && !Files.isRegularFile(path)) {
+                // a pipe, socket or device: format detection would consume what the reader needs,
+                // and opening a FIFO without a writer blocks forever
+                throw new InputException(source, 0, null, InputProblem.UNREADABLE, "this is not a regular file "
+                        + "(a pipe, socket or device); trajeval reads trajectory files twice (format, then data): "
+                        + "save the stream to a file first", null);
+            }
             size = Files.size(path);
         } catch (IOException | SecurityException e) {
             throw FileProblems.unreadable(source, e);
@@ -75,8 +82,25 @@ public final class TrajectoryReader {
         if (size > maxBytes) {
             throw FileProblems.tooManyBytes(source, size, maxBytes);
         }
-        if (size == 0 && Files.isRegularFile(path)) {
+        if (size == 0) {
             throw FileProblems.empty(source, "it is empty (0 bytes)");
+        }
+        refuseUtf16(path, source);
+    }
+
+    /** Refuses UTF-16 text (by its byte-order mark or NUL bytes), which would otherwise read as "not a number". */
+    private static void refuseUtf16(Path path, String source) {
+        byte[] head = new byte[4];
+        int n;
+        try (var in = Files.newInputStream(path)) {
+            n = in.readNBytes(head, 0, head.length);
+        } catch (IOException | SecurityException e) {
+            throw FileProblems.unreadable(source, e);
+        }
+        String utf16 = TextFiles.utf16(java.util.Arrays.copyOf(head, n));
+        if (utf16 != null) {
+            throw new InputException(source, 1, null, InputProblem.NOT_UTF8, "the file is " + utf16
+                    + "; trajeval reads UTF-8 or ASCII text (convert it, e.g. iconv -f UTF-16 -t UTF-8)", null);
         }
     }
 
@@ -87,6 +111,13 @@ public final class TrajectoryReader {
                     "the read options must give a CSV layout (column names, time unit), an order and a duplicate policy", null);
         }
         CsvTrajectoryReader.checkDelimiter(o.csv().delimiter());
+        CsvLayout c = o.csv();
+        java.util.List<String> names = java.util.List.of(c.timeColumn(), c.xColumn(), c.yColumn(), c.yawColumn());
+        if (new java.util.HashSet<>(names).size() < 4 || names.stream().anyMatch(String::isBlank)) {
+            throw new InputException(null, 0, "columns", InputProblem.DUPLICATE_COLUMN,
+                    "the CSV columns of time, x, y and yaw (--columns T,X,Y,YAW) must be four different, non-blank "
+                            + "names", String.join(",", names));
+        }
         if (!(o.quaternionTolerance() >= 0.0 && o.quaternionTolerance() < 1.0)) {
             throw new InputException(null, 0, "quaternionTolerance", InputProblem.INVALID_OPTION,
                     "the quaternion tolerance must be at least 0 and below 1", String.valueOf(o.quaternionTolerance()));

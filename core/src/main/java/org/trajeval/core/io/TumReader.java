@@ -23,7 +23,7 @@ final class TumReader {
             rows.select(new int[] {0, 1, 2, 3, 4, 5, 6, 7}, NAMES, UNITS);
             rows.requireFields(8, "t tx ty tz qx qy qz qw, separated by spaces");
             PoseBuffer poses = new PoseBuffer(source, "t", 8, options.order(),
-                    options.duplicates(), options.maxPoses());
+                    options.duplicates(), options.maxPoses()).positions("tx", "ty", "tz");
             poses.sizeFrom(lines);
             double[] in = new double[8];
             double[] row = new double[8];

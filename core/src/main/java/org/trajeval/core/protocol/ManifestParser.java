@@ -3,7 +3,6 @@ package org.trajeval.core.protocol;
 import com.fasterxml.jackson.core.JacksonException;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
-import com.fasterxml.jackson.dataformat.yaml.YAMLFactory;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
@@ -21,6 +20,8 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.trajeval.core.InputException;
 import org.trajeval.core.InputProblem;
+import org.trajeval.core.io.StrictMappers;
+import org.trajeval.core.io.TextFiles;
 import org.trajeval.core.options.DataKind;
 import org.trajeval.core.options.Setting;
 import org.trajeval.core.options.SettingText;
@@ -59,7 +60,10 @@ public final class ManifestParser {
     private static final Set<String> PLACEHOLDERS = Set.of("method", "sequence", "seed");
     private static final ObjectMapper TREE = new ObjectMapper();
 
-    private final ObjectMapper yaml = new ObjectMapper(new YAMLFactory());
+    /** Largest manifest read (bytes): 16 MiB, far above any real suite. */
+    static final long MAX_MANIFEST_BYTES = 16L << 20;
+
+    private final ObjectMapper yaml = StrictMappers.yaml();
 
     /**
      * Reads and checks the manifest at {@code file}.
@@ -68,16 +72,7 @@ public final class ManifestParser {
      */
     public SuiteManifest read(Path file) {
         String source = file.toString();
-        String text;
-        try {
-            text = Files.readString(file);
-        } catch (NoSuchFileException e) {
-            throw new InputException(source, 0, null, InputProblem.UNREADABLE, "manifest file does not exist", null, e);
-        } catch (IOException e) {
-            throw new InputException(source, 0, null, InputProblem.UNREADABLE,
-                    "manifest could not be read: " + e.getMessage(), null, e);
-        }
-        return parse(text, source);
+        return parse(TextFiles.readUtf8(file, "manifest", MAX_MANIFEST_BYTES), source);
     }
 
     /**

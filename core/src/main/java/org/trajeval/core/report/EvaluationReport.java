@@ -66,7 +66,7 @@ public record EvaluationReport(
     /** @return this report with other inputs (trajectories given as arrays through the Java API) */
     public EvaluationReport withInputs(Inputs other) {
         return new EvaluationReport(schema, schemaVersion, version, convention, other, association, alignment, ate,
-                rpe, drift);
+                rpe, drift, coverage, warnings, timeBase, extra);
     }
 
     /**

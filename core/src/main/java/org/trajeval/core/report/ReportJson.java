@@ -17,11 +17,36 @@ import java.nio.file.attribute.PosixFilePermissions;
 
 /** Reads and writes reports as JSON (Jackson stays behind this package). */
 public final class ReportJson {
-    private static final ObjectMapper MAPPER = new ObjectMapper()
+    private static final ObjectMapper MAPPER = org.trajeval.core.io.StrictMappers.json()
+            .registerModule(new com.fasterxml.jackson.databind.module.SimpleModule("finite-numbers")
+                    .addSerializer(Double.class, new FiniteOrNull()).addSerializer(double.class, new FiniteOrNull()))
             .enable(SerializationFeature.INDENT_OUTPUT)
             .disable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES);
 
     private ReportJson() {
+    }
+
+    /**
+     * Writes a non-finite number as {@code null}: the report schema allows numbers or null, and
+     * Jackson's default ("NaN", "Infinity" as strings) would break it. The readers bound their
+     * inputs so that no statistic overflows; this is the last line of defence.
+     */
+    private static final class FiniteOrNull extends com.fasterxml.jackson.databind.ser.std.StdSerializer<Double> {
+        private static final long serialVersionUID = 1L;
+
+        FiniteOrNull() {
+            super(Double.class);
+        }
+
+        @Override
+        public void serialize(Double v, com.fasterxml.jackson.core.JsonGenerator g,
+                com.fasterxml.jackson.databind.SerializerProvider p) throws IOException {
+            if (v == null || !Double.isFinite(v)) {
+                g.writeNull();
+            } else {
+                g.writeNumber(v);
+            }
+        }
     }
 
     /** @return the report as pretty-printed JSON, keys in schema order */

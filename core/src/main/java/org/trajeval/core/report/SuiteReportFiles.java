@@ -28,7 +28,7 @@ public final class SuiteReportFiles {
     /** File name of the comparison table. */
     public static final String COMPARISONS_CSV = "comparisons.csv";
 
-    private static final ObjectMapper READER = new ObjectMapper()
+    private static final ObjectMapper READER = org.trajeval.core.io.StrictMappers.json()
             .disable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES);
 
     private SuiteReportFiles() {

@@ -133,8 +133,9 @@ class NumberParsingTest {
             String y = randomNumber(rnd);
             String yaw = randomNumber(rnd);
             if (!Double.isFinite(Double.parseDouble(x)) || !Double.isFinite(Double.parseDouble(y))
-                    || !Double.isFinite(Double.parseDouble(yaw))) {
-                continue;
+                    || !Double.isFinite(Double.parseDouble(yaw))
+                    || Math.abs(Double.parseDouble(x)) > 1e9 || Math.abs(Double.parseDouble(y)) > 1e9) {
+                continue; // positions beyond 1e9 m are refused (OUT_OF_RANGE); yaw keeps the extreme numbers
             }
             plain.add(ts + "," + x + ", " + y + " ," + yaw + ",note");
             quoted.add("\"" + ts + "\"," + x + ",\"" + y + "\"," + yaw + ",\"a, \"\"quoted\"\" note\"");

@@ -38,7 +38,7 @@ public record RunManifest(RunMetadata metadata, String reference, String estimat
     /** Name of the manifest file in a bundle. */
     public static final String FILE_NAME = "run.yaml";
 
-    private static final ObjectMapper YAML = new ObjectMapper(new YAMLFactory());
+    private static final ObjectMapper YAML = org.trajeval.core.io.StrictMappers.yaml();
     private static final Set<String> KEYS = Set.of("run_id", "robot_id", "sequence", "method", "seed", "reference",
             "estimate", "metrics");
 
@@ -54,15 +54,12 @@ public record RunManifest(RunMetadata metadata, String reference, String estimat
         SafePaths.requireRegularFile(file, source, FILE_NAME, FILE_NAME, maxBytes);
         JsonNode root;
         try {
-            root = YAML.readTree(Files.readString(file));
+            root = YAML.readTree(org.trajeval.core.io.TextFiles.readUtf8(file, FILE_NAME, maxBytes));
         } catch (JsonProcessingException e) {
             JsonLocation loc = e.getLocation();
             throw new InputException(source, loc == null ? 0 : Math.max(0, loc.getLineNr()), null,
                     InputProblem.INVALID_CONFIGURATION, "run.yaml must be valid YAML: " + e.getOriginalMessage(),
                     null, e);
-        } catch (IOException e) {
-            throw new InputException(source, 0, null, InputProblem.UNREADABLE,
-                    "run.yaml could not be read: " + e.getMessage(), null, e);
         }
         return parse(root, source);
     }

@@ -3,6 +3,7 @@ package org.trajeval.pipeline.bundle;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
+import org.trajeval.pipeline.EnvironmentException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
@@ -27,11 +28,11 @@ final class ZipExtractor {
         long zipBytes;
         try {
             zipBytes = Math.max(1, Files.size(zip));
-            Files.createDirectories(dest);
         } catch (IOException e) {
             throw new InputException(source, 0, null, InputProblem.UNREADABLE, "zip could not be read: " + e.getMessage(),
                     null, e);
         }
+        createFolders(dest);
         long ratioCap = (long) Math.min(limits.maxUnzippedBytes(), zipBytes * limits.maxCompressionRatio());
         try (ZipFile zf = new ZipFile(zip.toFile())) {
             if (zf.size() > limits.maxZipEntries()) {
@@ -44,13 +45,13 @@ final class ZipExtractor {
                 ZipEntry e = en.nextElement();
                 Path target = entryTarget(dest, e.getName(), source);
                 if (e.isDirectory()) {
-                    Files.createDirectories(target);
+                    createFolders(target);
                     continue;
                 }
-                Files.createDirectories(target.getParent());
+                createFolders(target.getParent());
                 long fileBytes = 0;
                 try (InputStream in = zf.getInputStream(e);
-                        OutputStream out = Files.newOutputStream(target, StandardOpenOption.CREATE_NEW)) {
+                        OutputStream out = new EnvironmentOutput(target)) {
                     for (int n; (n = in.read(buf)) > 0; ) {
                         fileBytes += n;
                         total += n;
@@ -76,6 +77,55 @@ final class ZipExtractor {
         } catch (IOException e) {
             throw new InputException(source, 0, null, InputProblem.UNREADABLE, "zip could not be extracted: " + e,
                     null, e);
+        }
+    }
+
+    private static void createFolders(Path dir) {
+        try {
+            Files.createDirectories(dir);
+        } catch (IOException e) {
+            throw new EnvironmentException("create", dir, e);
+        }
+    }
+
+    /**
+     * The extracted file: a failure to create or write it (a full disk) is the service's environment
+     * failing, not the zip, so it is an {@link EnvironmentException} and the bundle is retried.
+     */
+    private static final class EnvironmentOutput extends OutputStream {
+        private final Path target;
+        private final OutputStream out;
+
+        EnvironmentOutput(Path target) {
+            this.target = target;
+            try {
+                this.out = Files.newOutputStream(target, StandardOpenOption.CREATE_NEW);
+            } catch (IOException e) {
+                throw new EnvironmentException("create", target, e);
+            }
+        }
+
+        @Override
+        public void write(int b) {
+            write(new byte[] {(byte) b}, 0, 1);
+        }
+
+        @Override
+        public void write(byte[] b, int off, int len) {
+            try {
+                out.write(b, off, len);
+            } catch (IOException e) {
+                throw new EnvironmentException("write", target, e);
+            }
+        }
+
+        @Override
+        public void close() {
+            try {
+                out.close();
+            } catch (IOException e) {
+                throw new EnvironmentException("write", target, e);
+            }
         }
     }
 

@@ -18,7 +18,9 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import org.trajeval.core.InputText;
 import org.trajeval.core.report.ReportJson;
+import org.trajeval.pipeline.EnvironmentException;
 import org.trajeval.pipeline.Outcome;
 import org.trajeval.pipeline.RunFailure;
 import org.trajeval.pipeline.RunJob;
@@ -38,6 +40,12 @@ import org.trajeval.pipeline.metrics.PipelineMetrics;
  * scanner reads incoming/ as a lazy directory stream and waits for a free permit, so a backlog of
  * any size stays on disk. Start-up resumes slots left in processing/ by a process that died.
  * {@link #stop()} (e.g. on SIGTERM) stops claiming and lets in-flight runs finish.
+ *
+ * <p>When the service's own environment fails (a full disk, a read-only reports/ or failed/: an
+ * {@link EnvironmentException}), the bundle is not the input's fault: it stays in processing/
+ * (lock released, so it is resumed), one line names the OS error, and claiming stops. A drain
+ * then ends with the work left counted as unfinished (exit code 7); a running service pauses
+ * ({@link #MIN_BACKOFF} doubling up to {@link #MAX_BACKOFF}) and retries the slots kept.
  */
 public final class DirectoryService {
     private static final Logger LOG = LoggerFactory.getLogger(DirectoryService.class);
@@ -59,6 +67,14 @@ public final class DirectoryService {
     private volatile boolean stopping;
     private volatile boolean running;
     private final Object wake = new Object();
+    private final AtomicLong kept = new AtomicLong();
+    private volatile EnvironmentException environmentFailure;
+    private Duration backoff = MIN_BACKOFF;
+
+    /** First pause after an environment failure in a running service. */
+    static final Duration MIN_BACKOFF = Duration.ofSeconds(1);
+    /** Longest pause between retries after environment failures. */
+    static final Duration MAX_BACKOFF = Duration.ofSeconds(60);
 
     /**
      * @param layout the service's folders (created if missing)
@@ -115,9 +131,20 @@ public final class DirectoryService {
             t.setDaemon(false);
             return t;
         });
+        StaleTempFiles.clean(layout.reports(), clock);
+        StaleTempFiles.clean(layout.failed(), clock);
         try {
             resumeLeftovers(workers);
             while (!stopping) {
+                if (environmentFailure != null) {
+                    if (drain) {
+                        awaitIdle();
+                        break;
+                    }
+                    pauseAfterEnvironmentFailure();
+                    resumeLeftovers(workers);
+                    continue;
+                }
                 claimedThisPass.set(0);
                 scanPass(workers);
                 if (drain) {
@@ -146,7 +173,33 @@ public final class DirectoryService {
             }
             running = false;
         }
-        return new DrainSummary(reported.get(), duplicates.get(), failed.get());
+        long unfinished = environmentFailure == null && kept.get() == 0 ? 0 : kept.get() + countKeys();
+        return new DrainSummary(reported.get(), duplicates.get(), failed.get(), unfinished);
+    }
+
+    /** Waits {@link #backoff} (doubling it up to {@link #MAX_BACKOFF}), then lets the scan retry. */
+    private void pauseAfterEnvironmentFailure() throws InterruptedException {
+        LOG.warn("pausing {} s after: {}", backoff.toSeconds(), environmentFailure.getMessage());
+        synchronized (wake) {
+            if (!stopping) {
+                wake.wait(backoff.toMillis());
+            }
+        }
+        backoff = backoff.multipliedBy(2).compareTo(MAX_BACKOFF) > 0 ? MAX_BACKOFF : backoff.multipliedBy(2);
+        environmentFailure = null;
+        kept.set(0);
+    }
+
+    /**
+     * Keeps a bundle the environment kept us from finishing: in processing/, lock released so the
+     * slot can be resumed, one line with the OS reason (no stack trace), claiming stopped.
+     */
+    private void keep(Slot slot, EnvironmentException e) {
+        kept.incrementAndGet();
+        environmentFailure = e;
+        LOG.warn("bundle={} stays in processing/ to be retried (not the input's fault): {}",
+                InputText.escape(slot.unit().slotName()), e.getMessage());
+        slot.close();
     }
 
     private void awaitIdle() throws InterruptedException {
@@ -185,7 +238,7 @@ public final class DirectoryService {
         metrics.queueDepth().set(waiting);
         try (DirectoryStream<Path> ds = Files.newDirectoryStream(layout.incoming())) {
             for (Path p : ds) {
-                if (stopping) {
+                if (stopping || environmentFailure != null) {
                     return;
                 }
                 String name = p.getFileName().toString();
@@ -201,11 +254,17 @@ public final class DirectoryService {
                         return;
                     }
                 }
+                if (environmentFailure != null) {
+                    permits.release(); // failed while we waited: claim nothing more
+                    return;
+                }
                 Slot slot;
                 try {
                     slot = Slot.claim(layout.incoming(), layout.processing(), unit);
                 } catch (IOException e) {
-                    LOG.warn("could not claim {}: {}", name, e.toString());
+                    environmentFailure = new EnvironmentException("claim into", layout.processing().resolve(
+                            unit.slotName()), e);
+                    LOG.warn("could not claim bundle={}: {}", InputText.escape(name), environmentFailure.getMessage());
                     slot = null;
                 }
                 if (slot == null) {
@@ -265,23 +324,27 @@ public final class DirectoryService {
             result = processor.process(job);
         } catch (StageException e) {
             result = RunResult.failed(null, e.failure());
+        } catch (EnvironmentException e) {
+            deleteScratch(scratch);
+            keep(slot, e);
+            return;
         } catch (IOException e) {
-            result = RunResult.failed(null, RunFailure.of(Stage.CLAIM, new UncheckedIOException(e)));
+            deleteScratch(scratch);
+            keep(slot, new EnvironmentException("clear", scratch, e));
+            return;
         } catch (RuntimeException e) {
             LOG.error("internal error on bundle={}", unit.slotName(), e);
             result = RunResult.failed(null, RunFailure.of(Stage.SCORE, e));
         }
-        try {
-            Slot.deleteTree(scratch);
-        } catch (IOException e) {
-            LOG.warn("could not delete {}: {}", scratch, e.toString());
-        }
+        deleteScratch(scratch);
         Duration took = Duration.ofNanos(System.nanoTime() - start);
         try {
             finish(slot, result);
-        } catch (RuntimeException e) {
-            LOG.error("could not finish bundle={}; it stays in processing/ and is resumed on restart", unit.slotName(), e);
-            slot.close();
+        } catch (EnvironmentException e) {
+            keep(slot, e);
+            return;
+        } catch (UncheckedIOException e) {
+            keep(slot, EnvironmentException.of(e));
             return;
         }
         metrics.recordRun(result.outcome(), took);
@@ -292,15 +355,25 @@ public final class DirectoryService {
         }
     }
 
+    private static void deleteScratch(Path scratch) {
+        try {
+            Slot.deleteTree(scratch);
+        } catch (IOException e) {
+            LOG.warn("could not delete {}: {}", InputText.escape(scratch.toString()), e.toString());
+        }
+    }
+
     private void finish(Slot slot, RunResult result) {
         if (result.outcome() == Outcome.FAILED) {
             Path dest = slot.destination(layout.failed());
             RunFailure f = result.failure();
+            // the message names files where they were read, in processing/SLOT: name where they are now
+            String message = f.message().replace(slot.dir().toString(), dest.toString());
             ObjectNode err = JSON.createObjectNode();
             err.put("bundle", slot.unit().slotName());
             err.put("stage", f.stage().name().toLowerCase(java.util.Locale.ROOT));
             err.put("kind", f.kind());
-            err.put("message", f.message());
+            err.put("message", message);
             err.put("bad_input", f.badInput());
             err.put("time", clock.instant().toString());
             try {
@@ -310,12 +383,12 @@ public final class DirectoryService {
                 throw new IllegalStateException(e);
             }
             slot.moveTo(dest);
-            LOG.warn("failed bundle={} stage={} kind={} message=\"{}\"", slot.unit().slotName(),
-                    err.get("stage").asText(), f.kind(), f.message());
+            LOG.warn("failed bundle={} stage={} kind={} message=\"{}\"", InputText.escape(slot.unit().slotName()),
+                    err.get("stage").asText(), f.kind(), InputText.escape(message));
         } else {
             slot.moveTo(slot.destination(layout.done()));
             LOG.info("{} run_id={} version={} bundle={} report={}", result.outcome().label(), result.runId(),
-                    result.version(), slot.unit().slotName(), result.report());
+                    result.version(), InputText.escape(slot.unit().slotName()), result.report());
         }
     }
 }

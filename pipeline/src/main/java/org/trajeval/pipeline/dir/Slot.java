@@ -1,7 +1,6 @@
 package org.trajeval.pipeline.dir;
 
 import java.io.IOException;
-import java.io.UncheckedIOException;
 import java.nio.channels.FileChannel;
 import java.nio.channels.FileLock;
 import java.nio.channels.OverlappingFileLockException;
@@ -15,6 +14,7 @@ import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
 import java.util.UUID;
+import org.trajeval.pipeline.EnvironmentException;
 
 /**
  * A bundle's folder in processing/, {@code processing/SLOT/}, holding the bundle's payload and
@@ -60,11 +60,20 @@ final class Slot implements AutoCloseable {
         Path dir = processing.resolve(unit.slotName());
         try {
             Files.move(tmp, dir, StandardCopyOption.ATOMIC_MOVE);
-        } catch (FileAlreadyExistsException | DirectoryNotEmptyException e) {
+        } catch (IOException e) {
+            // rename(2) onto an existing slot fails with ENOTEMPTY, which the JDK reports as a plain
+            // FileSystemException: any failure while the slot exists is a lost race, which is normal
             lock.release();
             ch.close();
             deleteTree(tmp);
-            return null;
+            if (e instanceof FileAlreadyExistsException || e instanceof DirectoryNotEmptyException
+                    || Files.exists(dir, LinkOption.NOFOLLOW_LINKS) || "Directory not empty".equals(
+                            e instanceof java.nio.file.FileSystemException fs ? fs.getReason() : null)
+                    || unit.payloadNames().stream().noneMatch(n -> Files.exists(incoming.resolve(n),
+                            LinkOption.NOFOLLOW_LINKS))) {
+                return null; // the other claimer may even have finished and moved the slot on already
+            }
+            throw e;
         }
         Slot slot = new Slot(dir, unit, ch, lock);
         if (!slot.collect(incoming)) {
@@ -83,6 +92,10 @@ final class Slot implements AutoCloseable {
         String name = dir.getFileName().toString();
         if (!Files.isDirectory(dir, LinkOption.NOFOLLOW_LINKS)) {
             return null;
+        }
+        if (name.startsWith(CLAIMING) && Files.getLastModifiedTime(dir).toMillis()
+                > System.currentTimeMillis() - 60_000) {
+            return null; // a claim another instance may be making right now (its lock may not be taken yet)
         }
         FileChannel ch;
         try {
@@ -148,12 +161,16 @@ final class Slot implements AutoCloseable {
      */
     void moveTo(Path target) {
         try {
-            Files.deleteIfExists(dir.resolve(LOCK));
             Files.move(dir, target, StandardCopyOption.ATOMIC_MOVE);
         } catch (IOException e) {
-            throw new UncheckedIOException("could not move " + dir + " to " + target + ": " + e.getMessage(), e);
+            throw new EnvironmentException("move", dir, e);
         } finally {
             close();
+        }
+        try {
+            Files.deleteIfExists(target.resolve(LOCK));
+        } catch (IOException e) {
+            // an empty lock file left in done/ or failed/ harms nothing
         }
     }
 

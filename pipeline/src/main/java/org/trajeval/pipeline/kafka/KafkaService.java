@@ -49,6 +49,7 @@ import org.slf4j.LoggerFactory;
 import org.trajeval.core.InputException;
 import org.trajeval.core.InputProblem;
 import org.trajeval.pipeline.Outcome;
+import org.trajeval.pipeline.EnvironmentException;
 import org.trajeval.pipeline.RunFailure;
 import org.trajeval.pipeline.RunJob;
 import org.trajeval.pipeline.RunProcessor;
@@ -425,6 +426,8 @@ public final class KafkaService {
             result = processor.process(job);
         } catch (StageException e) {
             result = RunResult.failed(event == null ? null : event.metadata().runId(), e.failure());
+        } catch (EnvironmentException e) {
+            throw e; // our disk or folders failed, not the event: the batch is aborted and delivered again
         } catch (RuntimeException e) {
             LOG.error("internal error on {}", source, e);
             result = RunResult.failed(null, RunFailure.of(Stage.SCORE, e));

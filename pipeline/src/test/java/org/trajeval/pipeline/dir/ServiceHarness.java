@@ -3,6 +3,8 @@ package org.trajeval.pipeline.dir;
 import java.nio.file.Path;
 import java.time.Clock;
 import java.time.Duration;
+import java.util.function.BiConsumer;
+import org.trajeval.core.report.ReportJson;
 import org.trajeval.pipeline.ReportStore;
 import org.trajeval.pipeline.RunProcessor;
 import org.trajeval.pipeline.RunScorer;
@@ -19,11 +21,17 @@ final class ServiceHarness implements AutoCloseable {
     final DirectoryService service;
 
     ServiceHarness(Path root, RunScorer scorer, DirectoryOptions options, BundleLimits limits) {
+        this(root, scorer, options, limits, ReportJson::writeAtomically);
+    }
+
+    /** With the function that writes report files (tests inject storage faults there). */
+    ServiceHarness(Path root, RunScorer scorer, DirectoryOptions options, BundleLimits limits,
+            BiConsumer<Path, String> reportWriter) {
         layout = new DirectoryLayout(root).create();
         ledger = Ledger.open(layout.ledger());
         service = new DirectoryService(layout, options, new RunProcessor(scorer,
-                new ReportStore(layout.reports(), ledger, Clock.systemUTC())), new BundleOpener(limits), metrics,
-                Clock.systemUTC());
+                new ReportStore(layout.reports(), ledger, Clock.systemUTC(), reportWriter)), new BundleOpener(limits),
+                metrics, Clock.systemUTC());
     }
 
     ServiceHarness(Path root, RunScorer scorer) {
