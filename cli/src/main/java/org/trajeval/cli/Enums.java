@@ -107,4 +107,11 @@ final class Enums {
             return parse(TimeUnit.class, v, "s|ms|us|ns");
         }
     }
+
+    static final class PlotPlaneConverter implements ITypeConverter<org.trajeval.figures.PlotPlane> {
+        @Override
+        public org.trajeval.figures.PlotPlane convert(String v) {
+            return parse(org.trajeval.figures.PlotPlane.class, v, "auto|xy|xz|yz");
+        }
+    }
 }

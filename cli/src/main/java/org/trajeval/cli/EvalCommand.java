@@ -121,6 +121,9 @@ public final class EvalCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "FILE", description = "Write the JSON report to FILE (atomically).")
     Path out;
 
+    @Mixin
+    PlotOptions plots = new PlotOptions();
+
     @Option(names = "--threads", paramLabel = "N", description = "Threads for reading the two files at once and "
             + "for the element-wise passes of the planar evaluation (default: ${DEFAULT-VALUE}; 1 does everything on "
             + "one thread). The numbers do not depend on it.", defaultValue = "2")
@@ -140,7 +143,11 @@ public final class EvalCommand implements Callable<Integer> {
             LoadedTrajectory[] pair = work.both(input, reference, estimate);
             LoadedTrajectory ref = pair[0];
             LoadedTrajectory est = pair[1];
-            report = Evaluator.evaluate(ref, est, options(ref, est), work.parallelism());
+            if (plots.wanted()) {
+                report = EvalPlots.write(ref, est, options(ref, est), plots, spec.commandLine().getErr());
+            } else {
+                report = Evaluator.evaluate(ref, est, options(ref, est), work.parallelism());
+            }
         }
         // JSON (and Jackson's start-up) only when asked for
         String jsonText = json || out != null ? ReportJson.toJson(report) : null;
