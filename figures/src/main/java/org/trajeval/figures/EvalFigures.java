@@ -195,6 +195,7 @@ public final class EvalFigures {
         if (a != 0 && (a < 1e-3 || a >= 1e5)) {
             return String.format(Locale.ROOT, "%.3g", v);
         }
-        return String.format(Locale.ROOT, "%.4g", v);
+        String t = String.format(Locale.ROOT, "%.4g", v);
+        return t.contains(".") ? t.replaceFirst("0+$", "").replaceFirst("\\.$", "") : t;
     }
 }
