@@ -114,4 +114,11 @@ final class Enums {
             return parse(org.trajeval.figures.PlotPlane.class, v, "auto|xy|xz|yz");
         }
     }
+
+    static final class ResFormatConverter implements ITypeConverter<ResTable.Format> {
+        @Override
+        public ResTable.Format convert(String v) {
+            return parse(ResTable.Format.class, v, "table|csv|markdown|latex");
+        }
+    }
 }

@@ -25,7 +25,7 @@ final class EvalPlots {
             saved.write(plots.seriesDir);
         }
         if (plots.plotDir != null) {
-            EvalPlotPage.write(saved, plots.plane, plots.plotDir, ProgressBar.forFigures(err));
+            EvalPlotPage.write(saved, plots.plane, plots.plotDir, ProgressBar.counter(err, "figures"));
         }
         return e.report();
     }

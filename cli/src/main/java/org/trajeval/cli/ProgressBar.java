@@ -24,13 +24,16 @@ final class ProgressBar implements SuiteRunner.Progress {
         return System.console() != null ? new ProgressBar(err) : SuiteRunner.Progress.none();
     }
 
-    /** @return a bar over the figures of a plot when stderr is a terminal, else nothing */
-    static org.trajeval.figures.EvalPlotPage.Progress forFigures(PrintWriter err) {
+    /**
+     * @param what what is counted ("figures", "results")
+     * @return a bar over any count when stderr is a terminal, else nothing (never in pipes)
+     */
+    static org.trajeval.figures.FigurePage.Progress counter(PrintWriter err, String what) {
         if (System.console() == null) {
-            return org.trajeval.figures.EvalPlotPage.Progress.none();
+            return org.trajeval.figures.FigurePage.Progress.none();
         }
         ProgressBar bar = new ProgressBar(err);
-        return (done, total) -> bar.draw(done, total, "figures");
+        return (done, total) -> bar.draw(done, total, what);
     }
 
     @Override

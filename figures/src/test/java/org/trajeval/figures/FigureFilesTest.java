@@ -22,7 +22,7 @@ class FigureFilesTest {
     @Test
     void everyFigureIsWrittenAsSvgAndPngAndTheIndexLinksThem() throws Exception {
         List<Figure> figs = EvalPlotPage.write(EvalFiguresTest.kittiLikeDrive(300, "se3", true), PlotPlane.AUTO, dir,
-                EvalPlotPage.Progress.none());
+                FigurePage.Progress.none());
         assertEquals(11, figs.size());
         String index = Files.readString(dir.resolve(EvalPlotPage.INDEX));
         for (Figure f : figs) {
