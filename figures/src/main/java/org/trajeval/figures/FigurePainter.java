@@ -55,14 +55,14 @@ final class FigurePainter {
         c.rect(px, py, pw, ph, -1, 1, FRAME);
         c.text(px + pw / 2, HEIGHT - 12, ax.label(), FONT, Canvas.Anchor.MIDDLE, false, false);
         c.text(18, py + ph / 2, ay.label(), FONT, Canvas.Anchor.MIDDLE, true, false);
-        double lx = px + pw + 14;
+        double lx = px + pw + 14 + (f.colour() != null ? 84 : 0);
         double ly = py + 6;
         for (Layer l : labelled) {
             legendEntry(c, lx, ly, l, f.colour());
             ly += 20;
         }
         if (f.colour() != null) {
-            colourBar(c, f.colour(), WIDTH - 84 + 10, py, ph);
+            colourBar(c, f.colour(), px + pw + 12, py, ph);
         }
     }
 
