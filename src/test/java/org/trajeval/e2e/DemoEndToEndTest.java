@@ -67,19 +67,19 @@ class DemoEndToEndTest {
         String html = Files.readString(dir.resolve("demo/report/report.html"));
         assertFalse(Pattern.compile("(src|href)\\s*=\\s*\"(https?:)?//", Pattern.CASE_INSENSITIVE).matcher(html).find(),
                 "the page must not fetch anything");
-        Matcher m = Pattern.compile("<img src=\"data:image/png;base64,").matcher(html);
+        Matcher m = Pattern.compile("<img src=\"data:image/svg\\+xml;base64,").matcher(html);
         int images = 0;
         while (m.find()) {
             images++;
         }
-        assertEquals(2 + 2 * 8, images); // two box plots, overlay + error plot per test sequence
+        assertEquals(4 + 2 * 8, images); // ATE/RPE translation/rotation boxes, overlay + error plot per test sequence
     }
 
     @Test
     void htmlOpensInHeadlessChromiumWithEveryFigureDrawnAndNoConsoleMessage() throws Exception {
         HeadlessChromium.assumeInstalled();
         HeadlessChromium.Result r = HeadlessChromium.open(dir.resolve("demo/report/report.html"), dir, "suite-report");
-        assertEquals(18, r.images());
+        assertEquals(20, r.images());
         assertEquals(0, r.broken(), "images that did not load");
         assertEquals(0, r.blank(), "figures without data: " + r.blankAlts());
         assertEquals(List.of(), r.console());

@@ -10,6 +10,9 @@ interface Canvas {
 
     void polyline(double[] x, double[] y, int n, int rgb, float width, boolean dashed);
 
+    /** Fills a closed polygon. */
+    void polygon(double[] x, double[] y, int n, int rgb, double opacity);
+
     void rect(double x, double y, double w, double h, int fillRgb, double fillOpacity, int strokeRgb);
 
     void marker(double x, double y, double size, Layer.Shape shape, int rgb);

@@ -56,15 +56,21 @@ public final class EvalFigures {
     /** What alignment was applied, for titles: "not aligned" or "aligned: SE(3) (Umeyama)". */
     static String alignment(EvaluationReport r) {
         String m = r.alignment() == null ? "none" : r.alignment().model();
-        return switch (m) {
+        String scale = m.startsWith("sim") ? ", scale " + fmt(r.alignment().scale()) : "";
+        return alignment(m) + scale;
+    }
+
+    /** @return the phrase for an alignment model name as the report writes it */
+    static String alignment(String model) {
+        return switch (model) {
             case "none" -> "not aligned";
             case "se2" -> "aligned: SE(2)";
-            case "sim2" -> "aligned: Sim(2), scale " + fmt(r.alignment().scale());
+            case "sim2" -> "aligned: Sim(2)";
             case "se3" -> "aligned: SE(3) (Umeyama)";
-            case "sim3" -> "aligned: Sim(3) (Umeyama), scale " + fmt(r.alignment().scale());
+            case "sim3" -> "aligned: Sim(3) (Umeyama)";
             case "origin" -> "aligned at the first pose";
             case "posyaw" -> "aligned: position and yaw";
-            default -> "aligned: " + m;
+            default -> "aligned: " + model;
         };
     }
 

@@ -104,6 +104,17 @@ final class FigurePainter {
         } else if (l instanceof Layer.Rule r) {
             c.polyline(new double[] {m.px, m.px + m.pw}, new double[] {m.y(r.y()), m.y(r.y())}, 2, r.rgb(), 1.6f,
                     r.dashed());
+        } else if (l instanceof Layer.Area a) {
+            int n = a.x().length;
+            double[] xs = new double[2 * n];
+            double[] ys = new double[2 * n];
+            for (int i = 0; i < n; i++) {
+                xs[i] = m.x(a.x()[i]);
+                ys[i] = m.y(a.upper()[i]);
+                xs[2 * n - 1 - i] = xs[i];
+                ys[2 * n - 1 - i] = m.y(a.lower()[i]);
+            }
+            c.polygon(xs, ys, 2 * n, a.rgb(), 0.2);
         } else if (l instanceof Layer.Band b) {
             c.rect(m.px, m.y(b.upper()), m.pw, m.y(b.lower()) - m.y(b.upper()), b.rgb(), 0.18, -1);
         } else if (l instanceof Layer.Points p) {
@@ -178,6 +189,8 @@ final class FigurePainter {
             c.polyline(new double[] {x + 16, x + 24}, new double[] {y, y}, 2, scale.rgb(scale.max()), 3f, false);
         } else if (l instanceof Layer.Band b) {
             c.rect(x, y - 6, 24, 12, b.rgb(), 0.25, -1);
+        } else if (l instanceof Layer.Area a) {
+            c.rect(x, y - 6, 24, 12, a.rgb(), 0.25, -1);
         } else if (l instanceof Layer.Points p) {
             c.marker(x + 12, y, 9, p.shape(), p.rgb());
         } else if (l instanceof Layer.Bars b) {

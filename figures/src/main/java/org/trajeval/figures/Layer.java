@@ -39,6 +39,16 @@ public sealed interface Layer {
     record Band(String label, double lower, double upper, int rgb) implements Layer {
     }
 
+    /** A shaded area between two curves over the same x (the envelope of several seeds). */
+    record Area(String label, double[] x, double[] lower, double[] upper, int rgb) implements Layer {
+        /** @throws IllegalArgumentException when the arrays differ in length */
+        public Area {
+            if (x.length != lower.length || x.length != upper.length) {
+                throw new IllegalArgumentException("area '" + label + "': arrays differ in length");
+            }
+        }
+    }
+
     /** Markers (start and end of a path). */
     record Points(String label, double[] x, double[] y, int rgb, Shape shape) implements Layer {
     }

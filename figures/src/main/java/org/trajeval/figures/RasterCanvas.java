@@ -52,6 +52,21 @@ final class RasterCanvas implements Canvas {
     }
 
     @Override
+    public void polygon(double[] x, double[] y, int n, int rgb, double opacity) {
+        if (n < 3) {
+            return;
+        }
+        Path2D.Double p = new Path2D.Double(Path2D.WIND_NON_ZERO, n);
+        p.moveTo(x[0], y[0]);
+        for (int i = 1; i < n; i++) {
+            p.lineTo(x[i], y[i]);
+        }
+        p.closePath();
+        g.setColor(new Color((rgb >> 16) & 255, (rgb >> 8) & 255, rgb & 255, (int) Math.round(255 * opacity)));
+        g.fill(p);
+    }
+
+    @Override
     public void rect(double x, double y, double w, double h, int fillRgb, double fillOpacity, int strokeRgb) {
         Rectangle2D.Double r = new Rectangle2D.Double(x, y, w, h);
         if (fillRgb >= 0) {

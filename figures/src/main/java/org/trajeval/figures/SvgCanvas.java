@@ -27,6 +27,16 @@ final class SvgCanvas implements Canvas {
     }
 
     @Override
+    public void polygon(double[] x, double[] y, int n, int rgb, double opacity) {
+        s.append("<polygon fill=\"").append(hex(rgb)).append("\" fill-opacity=\"").append(num(opacity))
+                .append("\" stroke=\"none\" points=\"");
+        for (int i = 0; i < n; i++) {
+            s.append(i == 0 ? "" : " ").append(num(x[i])).append(',').append(num(y[i]));
+        }
+        s.append("\"/>\n");
+    }
+
+    @Override
     public void rect(double x, double y, double w, double h, int fillRgb, double fillOpacity, int strokeRgb) {
         s.append("<rect x=\"").append(num(x)).append("\" y=\"").append(num(y)).append("\" width=\"").append(num(w))
                 .append("\" height=\"").append(num(h)).append("\" fill=\"")
