@@ -11,7 +11,7 @@ final class PlotOptions {
     Path plotDir;
 
     @Option(names = "--plot-plane", paramLabel = "auto|xy|xz|yz", defaultValue = "auto",
-            converter = Enums.PlotPlaneConverter.class, description = "Plane of the trajectory plot (default: "
+            converter = PlotOptions.PlaneConverter.class, description = "Plane of the trajectory plot (default: "
             + "${DEFAULT-VALUE}: the two axes of largest extent, x-z for KITTI's camera frame).")
     org.trajeval.figures.PlotPlane plane;
 
@@ -19,6 +19,19 @@ final class PlotOptions {
             + "poses.csv.gz (time, reference and aligned estimate positions (m), ATE (m, rad) per pose) and "
             + "pairs.csv.gz (RPE (m, rad) per pair); pandas reads each with pd.read_csv. trajeval res reads DIR.")
     Path seriesDir;
+
+    /** Reads auto|xy|xz|yz, any case. */
+    static final class PlaneConverter implements picocli.CommandLine.ITypeConverter<org.trajeval.figures.PlotPlane> {
+        @Override
+        public org.trajeval.figures.PlotPlane convert(String v) {
+            for (org.trajeval.figures.PlotPlane p : org.trajeval.figures.PlotPlane.values()) {
+                if (p.name().equalsIgnoreCase(v.trim())) {
+                    return p;
+                }
+            }
+            throw new picocli.CommandLine.TypeConversionException("expected auto|xy|xz|yz, found \"" + v + "\"");
+        }
+    }
 
     /** @return true when the per-pose data is needed */
     boolean wanted() {

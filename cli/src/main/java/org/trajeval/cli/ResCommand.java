@@ -34,7 +34,7 @@ public final class ResCommand implements Callable<Integer> {
     List<String> inputs;
 
     @Option(names = "--format", paramLabel = "table|csv|markdown|latex", defaultValue = "table",
-            converter = Enums.ResFormatConverter.class, description = "Table format (default: ${DEFAULT-VALUE}).")
+            converter = ResCommand.FormatConverter.class, description = "Table format (default: ${DEFAULT-VALUE}).")
     ResTable.Format format;
 
     @Option(names = "--plot", paramLabel = "DIR", description = "Draw box plots of each error side by side and the "
@@ -47,6 +47,20 @@ public final class ResCommand implements Callable<Integer> {
 
     @Option(names = "--verbose", description = "Print stack traces of errors.")
     boolean verbose;
+
+    /** Reads table|csv|markdown|latex, any case. */
+    static final class FormatConverter implements picocli.CommandLine.ITypeConverter<ResTable.Format> {
+        @Override
+        public ResTable.Format convert(String v) {
+            for (ResTable.Format f : ResTable.Format.values()) {
+                if (f.name().equalsIgnoreCase(v.trim())) {
+                    return f;
+                }
+            }
+            throw new picocli.CommandLine.TypeConversionException("expected table|csv|markdown|latex, found \""
+                    + v + "\"");
+        }
+    }
 
     @Override
     public Integer call() {
