@@ -125,4 +125,15 @@ class PlotAndResOnRealDataTest {
         assertEquals(ExitCodes.BAD_INPUT, z.code());
         assertTrue(z.err().contains("fake.zip: not a zip archive or empty"), z.err());
     }
+
+    @Test
+    void compareOnEvaluationReportsPointsToResInsteadOfLeakingAParserMessage() throws Exception {
+        Path json = dir.resolve("orb.json");
+        Files.copy(dir.resolve("orb/report.json"), json);
+        SuiteCommandsTest.Run r = SuiteCommandsTest.run("compare", json.toString(), json.toString());
+        assertEquals(ExitCodes.BAD_INPUT, r.code());
+        assertTrue(r.err().contains("orb.json: an evaluation report (trajeval eval --out), not a suite report; "
+                + "trajeval res compares evaluation results"), r.err());
+        assertTrue(!r.err().contains("deserialize"), r.err());
+    }
 }
