@@ -9,10 +9,9 @@ import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.concurrent.TimeUnit;
+import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -22,11 +21,10 @@ import picocli.CommandLine;
 /**
  * The README's first command, {@code trajeval demo --out DIR}, in a temporary folder: every report
  * file is written, the JSON is reproducible, and the HTML page opens in headless Chromium with every
- * image loaded and nothing fetched from the network.
+ * figure drawn, no console message and nothing fetched from the network; so does an eval --plot page.
+ * Screenshots go to build/screenshots/.
  */
 class DemoEndToEndTest {
-    private static final Path CHROMIUM = Path.of("/usr/bin/chromium");
-
     @TempDir
     static Path dir;
     private static String out;
@@ -81,35 +79,41 @@ class DemoEndToEndTest {
         String html = Files.readString(dir.resolve("demo/report/report.html"));
         assertFalse(Pattern.compile("(src|href)\\s*=\\s*\"(https?:)?//", Pattern.CASE_INSENSITIVE).matcher(html).find(),
                 "the page must not fetch anything");
-        Matcher m = Pattern.compile("<img src=\"data:image/png;base64,").matcher(html);
+        Matcher m = Pattern.compile("<img src=\"data:image/svg\\+xml;base64,").matcher(html);
         int images = 0;
         while (m.find()) {
             images++;
         }
-        assertEquals(2 + 2 * 8, images); // two box plots, overlay + error plot per test sequence
+        assertEquals(4 + 2 * 8, images); // ATE/RPE translation/rotation boxes, overlay + error plot per test sequence
     }
 
     @Test
-    void htmlOpensInHeadlessChromiumWithEveryImageLoaded() throws Exception {
-        Assumptions.assumeTrue(Files.isExecutable(CHROMIUM),
-                "SKIPPED LOUDLY: /usr/bin/chromium is absent; run scripts/ensure-tools (apt-get install chromium)");
-        String html = Files.readString(dir.resolve("demo/report/report.html"));
-        // a copy with a probe that writes what the browser loaded into the DOM (the report has no script)
-        String probe = "<script>window.addEventListener('load',function(){var imgs=document.images,bad=0;"
-                + "for(var i=0;i<imgs.length;i++){if(!(imgs[i].complete&&imgs[i].naturalWidth>0))bad++;}"
-                + "var p=document.createElement('pre');p.id='probe';p.textContent='images='+imgs.length+' broken='+bad;"
-                + "document.body.appendChild(p);});</script></body>";
-        Path page = dir.resolve("probe.html");
-        Files.writeString(page, html.replace("</body>", probe));
-        Process p = new ProcessBuilder(CHROMIUM.toString(), "--headless", "--no-sandbox", "--disable-gpu",
-                "--user-data-dir=" + dir.resolve("chromium-profile"), "--virtual-time-budget=10000", "--dump-dom",
-                page.toUri().toString()).redirectError(ProcessBuilder.Redirect.DISCARD).start();
-        String dom = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
-        assertTrue(p.waitFor(120, TimeUnit.SECONDS), "chromium did not finish");
-        Matcher m = Pattern.compile("images=(\\d+) broken=(\\d+)").matcher(dom);
-        assertTrue(m.find(), "probe result missing from the DOM");
-        assertEquals(18, Integer.parseInt(m.group(1)));
-        assertEquals(0, Integer.parseInt(m.group(2)), "images that did not load");
-        assertTrue(dom.contains("Paired comparisons"));
+    void htmlOpensInHeadlessChromiumWithEveryFigureDrawnAndNoConsoleMessage() throws Exception {
+        HeadlessChromium.assumeInstalled();
+        HeadlessChromium.Result r = HeadlessChromium.open(dir.resolve("demo/report/report.html"), dir, "suite-report");
+        assertEquals(20, r.images());
+        assertEquals(0, r.broken(), "images that did not load");
+        assertEquals(0, r.blank(), "figures without data: " + r.blankAlts());
+        assertEquals(List.of(), r.console());
+        assertTrue(Files.size(r.screenshot()) > 10_000, "screenshot " + r.screenshot());
+    }
+
+    @Test
+    void evalPlotPageOpensInHeadlessChromiumWithEveryFigureDrawn() throws Exception {
+        HeadlessChromium.assumeInstalled();
+        Path refdata = Path.of(System.getProperty("trajeval.refdata", "../shared/refdata"));
+        StringWriter e = new StringWriter();
+        CommandLine cl = TrajevalCommand.newCommandLine();
+        cl.setOut(new PrintWriter(new StringWriter()));
+        cl.setErr(new PrintWriter(e));
+        assertEquals(0, cl.execute("eval", refdata.resolve("freiburg1_xyz-groundtruth.txt").toString(),
+                refdata.resolve("freiburg1_xyz-rgbdslam.txt").toString(), "--plot", dir.resolve("tum").toString()),
+                e.toString());
+        HeadlessChromium.Result r = HeadlessChromium.open(dir.resolve("tum/index.html"), dir, "eval-plot");
+        assertEquals(9, r.images()); // trajectories, 4 over time, 4 histograms
+        assertEquals(0, r.broken(), "images that did not load");
+        assertEquals(0, r.blank(), "figures without data: " + r.blankAlts());
+        assertEquals(List.of(), r.console());
+        assertTrue(Files.size(r.screenshot()) > 10_000, "screenshot " + r.screenshot());
     }
 }

@@ -68,6 +68,9 @@ public final class EvalCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "FILE", description = "Write the JSON report to FILE (atomically).")
     Path out;
 
+    @picocli.CommandLine.Mixin
+    PlotOptions plots = new PlotOptions();
+
     @Option(names = "--threads", paramLabel = "N", converter = BoundedOptions.Threads.class, description = "Threads for reading the two files at once and "
             + "for the element-wise passes of the planar evaluation (default: ${DEFAULT-VALUE}; 1 does everything on "
             + "one thread). The numbers do not depend on it.", defaultValue = "2")
@@ -114,7 +117,8 @@ public final class EvalCommand implements Callable<Integer> {
             FormatApplicability.check(settings, ref, reference.toString(), est, estimate.toString());
             EvaluationOptions options = SettingsResolver.evaluationOptions(settings,
                     DataKind.of(ref.trajectory(), est.trajectory()));
-            report = Evaluator.evaluate(ref, est, options, work.parallelism());
+            report = plots.wanted() ? EvalPlots.write(ref, est, options, plots, spec.commandLine().getErr())
+                    : Evaluator.evaluate(ref, est, options, work.parallelism());
             notices = EvalNotices.of(report, options, (Integer) settings.get(Setting.N_TO_ALIGN));
         }
         PrintWriter err = spec.commandLine().getErr();

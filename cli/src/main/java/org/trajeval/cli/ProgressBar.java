@@ -24,17 +24,33 @@ final class ProgressBar implements SuiteRunner.Progress {
         return System.console() != null ? new ProgressBar(err) : SuiteRunner.Progress.none();
     }
 
+    /**
+     * @param what what is counted ("figures", "results")
+     * @return a bar over any count when stderr is a terminal, else nothing (never in pipes)
+     */
+    static org.trajeval.figures.FigurePage.Progress counter(PrintWriter err, String what) {
+        if (System.console() == null) {
+            return org.trajeval.figures.FigurePage.Progress.none();
+        }
+        ProgressBar bar = new ProgressBar(err);
+        return (done, total) -> bar.draw(done, total, what);
+    }
+
     @Override
     public synchronized void runFinished(int done, int total) {
         if (total < MIN_RUNS) {
             return;
         }
+        draw(done, total, "runs");
+    }
+
+    private synchronized void draw(int done, int total, String what) {
         int filled = (int) ((long) WIDTH * done / total);
         if (filled == lastDrawn && done != total) {
             return;
         }
         lastDrawn = filled;
-        err.print("\r[" + "#".repeat(filled) + ".".repeat(WIDTH - filled) + "] " + done + "/" + total + " runs");
+        err.print("\r[" + "#".repeat(filled) + ".".repeat(WIDTH - filled) + "] " + done + "/" + total + " " + what);
         if (done == total) {
             err.print("\r" + " ".repeat(WIDTH + 30) + "\r");
         }

@@ -10,7 +10,7 @@ import picocli.CommandLine.Command;
 /** The {@code trajeval} command: scores trajectories and benchmark suites. */
 @Command(name = "trajeval", mixinStandardHelpOptions = true, versionProvider = TrajevalCommand.VersionProvider.class,
         description = "Scores robot trajectories against ground truth (ATE, RPE, drift) and runs benchmark suites.",
-        subcommands = {EvalCommand.class, SuiteCommand.class, CompareCommand.class, SplitsCommand.class,
+        subcommands = {EvalCommand.class, ResCommand.class, SuiteCommand.class, CompareCommand.class, SplitsCommand.class,
             DemoCommand.class, TopicsCommand.class, ConvertCommand.class},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success", "1:internal error (a bug; rerun with --verbose and report it)",

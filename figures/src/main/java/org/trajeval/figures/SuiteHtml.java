@@ -1,9 +1,13 @@
 package org.trajeval.figures;
 
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Base64;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import org.trajeval.core.report.ReportJson;
 import org.trajeval.core.report.SequencePlot;
 import org.trajeval.core.report.SuiteReport;
@@ -12,12 +16,14 @@ import org.trajeval.core.report.SuiteReport.Comparison;
 import org.trajeval.core.report.SuiteReport.MethodSummary;
 import org.trajeval.core.report.SuiteReport.MetricSummary;
 import org.trajeval.core.report.SuiteReport.RunEntry;
+import org.trajeval.core.stats.Interval;
+import org.trajeval.core.stats.PairedTInterval;
 
 /**
- * The human-readable page of a suite: one self-contained HTML file (inline CSS, charts as PNG
- * data URIs, no script and no network fetch) with the protocol, hygiene findings, the summary and
- * comparison tables with their intervals, box plots per method, and per sequence a trajectory
- * overlay and an error-over-time plot.
+ * The human-readable page of a suite: one self-contained HTML file (inline CSS, figures as SVG
+ * data URIs, no script and no network fetch) with the protocol, hygiene findings, the summary,
+ * comparison and per-sequence tables with their intervals, box plots per method of every error
+ * ({@link SuiteFigures}), and per sequence a trajectory overlay and an error-over-time plot.
  */
 public final class SuiteHtml {
     /** File name of the page. */
@@ -26,25 +32,56 @@ public final class SuiteHtml {
     private SuiteHtml() {
     }
 
-    /** Writes {@link #FILE} into {@code dir} (atomically). */
+    /** Folder (inside the report folder) of the figures as SVG files, for papers. */
+    public static final String FIGURES = "figures";
+
+    /** Writes {@link #FILE} into {@code dir}, and every figure as {@code figures/NN_NAME.svg} (each atomically). */
     public static void write(SuiteReport report, List<SequencePlot> plots, Path dir) {
-        ReportJson.writeAtomically(dir.resolve(FILE), render(report, plots));
+        List<Figure> figures = figures(report, plots);
+        Map<Figure, String> svg = new LinkedHashMap<>();
+        int i = 0;
+        for (Figure f : figures) {
+            String text = FigureFiles.svg(f);
+            svg.put(f, text);
+            ReportJson.writeAtomically(dir.resolve(FIGURES).resolve(String.format(Locale.ROOT, "%02d_%s.svg", ++i,
+                    f.name())), text);
+        }
+        ReportJson.writeAtomically(dir.resolve(FILE), render(report, plots, svg));
     }
 
-    /** @return the page */
+    /** @return the page, figures drawn here */
     public static String render(SuiteReport r, List<SequencePlot> plots) {
+        Map<Figure, String> svg = new LinkedHashMap<>();
+        for (Figure f : figures(r, plots)) {
+            svg.put(f, FigureFiles.svg(f));
+        }
+        return render(r, plots, svg);
+    }
+
+    /** @return every figure of the page: the box plots, then per sequence the trajectories and the error */
+    static List<Figure> figures(SuiteReport r, List<SequencePlot> plots) {
+        List<Figure> out = new ArrayList<>(SuiteFigures.boxes(r));
+        for (SequencePlot p : plots) {
+            out.add(SuiteFigures.overlay(p, PlotPlane.AUTO));
+            out.add(SuiteFigures.errorOverTime(p));
+        }
+        return out;
+    }
+
+    private static String render(SuiteReport r, List<SequencePlot> plots, Map<Figure, String> svg) {
         StringBuilder h = new StringBuilder(1 << 16);
         SuiteReport.Protocol p = r.protocol();
         h.append("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>trajeval suite: ")
                 .append(esc(p.dataset())).append("</title>\n<style>\n")
                 .append("body{font-family:system-ui,-apple-system,Segoe UI,Roboto,sans-serif;margin:2em auto;")
-                .append("max-width:1200px;color:#222;padding:0 1em}\n")
+                .append("max-width:1600px;color:#222;padding:0 1em}\n.scroll{overflow-x:auto}\n")
                 .append("table{border-collapse:collapse;margin:0.5em 0 1.5em}th,td{border:1px solid #ccc;")
                 .append("padding:4px 8px;text-align:right;font-variant-numeric:tabular-nums}")
                 .append("th{background:#f3f3f3}td.l,th.l{text-align:left}\n")
                 .append(".warn{background:#fff3cd;border:1px solid #e0b000;padding:0.6em 1em;margin:0.5em 0}\n")
                 .append(".bad{background:#fde2e1;border:1px solid #d33;padding:0.6em 1em;margin:0.5em 0}\n")
-                .append(".charts img{margin:4px;border:1px solid #ddd}.small{color:#666;font-size:0.9em}\n")
+                .append(".charts{display:flex;flex-wrap:wrap;gap:6px}.charts img{max-width:100%;height:auto;")
+                .append("border:1px solid #ddd}.small{color:#666;font-size:0.9em}\n")
                 .append("code{background:#f6f6f6;padding:0 3px}\n")
                 .append(".wide{overflow-x:auto}.wide td{white-space:nowrap}\n</style></head><body>\n");
         h.append("<h1>Benchmark suite: ").append(esc(p.dataset())).append("</h1>\n");
@@ -58,8 +95,9 @@ public final class SuiteHtml {
         comparisons(h, r);
         SuiteStatisticsHtml.rankings(h, r);
         SuiteStatisticsHtml.variance(h, r);
-        boxes(h, r);
-        sequences(h, plots);
+        perSequence(h, r);
+        boxes(h, r, svg);
+        sequences(h, plots, svg);
         failures(h, r);
         h.append("</body></html>\n");
         return h.toString();
@@ -118,7 +156,8 @@ public final class SuiteHtml {
                 .append(pct(level)).append("</th><th>clustered by sequence ").append(pct(level))
                 .append("<br><span class=\"small\">Korn-Graubard</span></th><th>score S (mean &plusmn; sd)</th>");
         for (String k : keys) {
-            h.append("<th>").append(esc(k)).append("<br><span class=\"small\">mean of sequence means</span></th>");
+            h.append("<th>").append(esc(MetricLabel.of(k).label())).append("<br><span class=\"small\">mean of sequence ")
+                    .append("means (").append(esc(k)).append(")</span></th>");
         }
         h.append("</tr></thead><tbody>\n");
         for (MethodSummary m : r.methods()) {
@@ -139,7 +178,8 @@ public final class SuiteHtml {
                     .append("</td>");
             for (String k : keys) {
                 MetricSummary ms = m.metrics().stream().filter(x -> x.metric().equals(k)).findFirst().orElse(null);
-                h.append("<td>").append(ms == null ? "" : fmt(ms.meanOfSequenceMeans())).append("</td>");
+                h.append("<td>").append(ms == null || ms.meanOfSequenceMeans() == null ? "" : fmt(ms.meanOfSequenceMeans()
+                        * MetricLabel.of(k).factor())).append("</td>");
             }
             h.append("</tr>\n");
         }
@@ -164,7 +204,7 @@ public final class SuiteHtml {
         for (Comparison c : r.comparisons()) {
             SuiteReport.HodgesLehmannEntry hl = c.hodgesLehmann();
             h.append("<tr><td class=\"l\">").append(esc(c.methodA())).append("</td><td class=\"l\">")
-                    .append(esc(c.methodB())).append("</td><td class=\"l\">").append(esc(c.metric()))
+                    .append(esc(c.methodB())).append("</td><td class=\"l\">").append(esc(MetricLabel.of(c.metric()).label()))
                     .append("</td><td>").append(c.n()).append("</td><td>").append(c.nonzeroDifferences())
                     .append("</td><td>").append(fmt(c.meanDifference()))
                     .append("</td><td>").append(bounds(c.tInterval())).append("</td><td>")
@@ -199,36 +239,74 @@ public final class SuiteHtml {
         return p == null ? org.trajeval.core.stats.PowerPlanning.DEFAULT_POWER : p;
     }
 
-    private static void boxes(StringBuilder h, SuiteReport r) {
+    private static void perSequence(StringBuilder h, SuiteReport r) {
+        double level = r.protocol().analysis().confidenceLevel();
+        List<String> keys = r.protocol().score().stream().map(SuiteReport.ScoreTerm::metric).toList();
         List<String> methods = r.methods().stream().map(MethodSummary::name).toList();
-        h.append("<h2>Distribution over runs</h2>\n<div class=\"charts\">\n");
-        List<String> keys = new ArrayList<>(r.protocol().score().stream().map(SuiteReport.ScoreTerm::metric).toList());
-        if (!keys.contains("ate_trans_rmse_m")) {
-            keys.add(0, "ate_trans_rmse_m");
-        }
+        List<String> sequences = r.runs().stream().map(RunEntry::sequence).distinct().toList();
+        h.append("<h2>Per sequence</h2>\n<p class=\"small\">Mean over the successful seeds &plusmn; half-width of ")
+                .append("the t-interval ").append(pct(level)).append(" (x&#772; &plusmn; t<sub>n-1</sub> s/&radic;n)")
+                .append(", and the number of successful seeds n; &mdash; where no seed succeeded.</p>\n");
         for (String k : keys) {
-            List<double[]> values = new ArrayList<>();
+            MetricLabel label = MetricLabel.of(k);
+            h.append("<div class=\"scroll\"><table><caption>").append(esc(label.label()))
+                    .append("</caption><thead><tr><th class=\"l\">sequence</th>");
             for (String m : methods) {
-                values.add(r.runs().stream().filter(x -> x.method().equals(m) && x.ok() && x.metrics() != null
-                        && x.metrics().get(k) != null).mapToDouble(x -> x.metrics().get(k)).toArray());
+                h.append("<th>").append(esc(m)).append("</th>");
             }
-            if (values.stream().allMatch(v -> v.length == 0)) {
-                continue;
+            h.append("</tr></thead><tbody>\n");
+            for (String seq : sequences) {
+                h.append("<tr><td class=\"l\">").append(esc(seq)).append("</td>");
+                for (String m : methods) {
+                    double[] v = r.runs().stream().filter(x -> x.method().equals(m) && x.sequence().equals(seq)
+                            && x.ok() && x.metrics() != null && x.metrics().get(k) != null)
+                            .mapToDouble(x -> x.metrics().get(k) * label.factor()).toArray();
+                    h.append("<td>").append(meanInterval(v, level)).append("</td>");
+                }
+                h.append("</tr>\n");
             }
-            h.append(img(SuiteCharts.boxes(k + " per method (successful runs)", k, methods, values), k));
+            h.append("</tbody></table></div>\n");
         }
+    }
+
+    private static String meanInterval(double[] v, double level) {
+        if (v.length == 0) {
+            return "&mdash;";
+        }
+        if (v.length == 1) {
+            return fmt(v[0]) + " <span class=\"small\">(n = 1)</span>";
+        }
+        Interval ci = PairedTInterval.of(v, level);
+        return fmt(ci.estimate()) + " &plusmn; " + fmt(ci.upper() - ci.estimate()) + " <span class=\"small\">(n = "
+                + v.length + ")</span>";
+    }
+
+    private static void boxes(StringBuilder h, SuiteReport r, Map<Figure, String> svg) {
+        h.append("<h2>Distribution over runs</h2>\n<p class=\"small\">One box per method over its successful runs ")
+                .append("(every sequence and seed): box from the first to the third quartile, line at the median, ")
+                .append("whiskers to the last run within 1.5 IQR. Axes start at zero.</p>\n<div class=\"charts\">\n");
+        svg.forEach((f, text) -> {
+            if (f.name().startsWith("box_")) {
+                h.append(img(text, f.title()));
+            }
+        });
         h.append("</div>\n");
     }
 
-    private static void sequences(StringBuilder h, List<SequencePlot> plots) {
-        h.append("<h2>Sequences</h2>\n<p class=\"small\">Each method's run with the first common seed, moved by ")
-                .append("the alignment its evaluation fitted; error against the reference interpolated at the ")
-                .append("estimate's stamps.</p>\n");
-        for (SequencePlot p : plots) {
-            h.append("<h3>").append(esc(p.sequence())).append("</h3>\n<div class=\"charts\">")
-                    .append(img(SuiteCharts.overlay(p), "trajectories " + p.sequence()))
-                    .append(img(SuiteCharts.errorOverTime(p), "error over time " + p.sequence()))
-                    .append("</div>\n");
+    private static void sequences(StringBuilder h, List<SequencePlot> plots, Map<Figure, String> svg) {
+        h.append("<h2>Sequences</h2>\n<p class=\"small\">Every seed of every method, moved by the alignment its ")
+                .append("evaluation fitted (the title says which); the bold line is the seed with the median RMS ")
+                .append("error. Position error against the reference interpolated at the estimate's stamps, over ")
+                .append("time from the reference's first stamp: per method the median over seeds and the shaded ")
+                .append("min-max envelope.</p>\n");
+        // figures() puts the box plots first, then per sequence its overlay and its error plot
+        List<Figure> figs = svg.keySet().stream().filter(f -> !f.name().startsWith("box_")).toList();
+        for (int i = 0; i < plots.size(); i++) {
+            h.append("<h3>").append(esc(plots.get(i).sequence())).append("</h3>\n<div class=\"charts\">");
+            for (Figure f : figs.subList(2 * i, 2 * i + 2)) {
+                h.append(img(svg.get(f), f.title()));
+            }
+            h.append("</div>\n");
         }
     }
 
@@ -250,8 +328,10 @@ public final class SuiteHtml {
         h.append("</tbody></table>\n");
     }
 
-    private static String img(String dataUri, String alt) {
-        return "<img src=\"" + dataUri + "\" alt=\"" + esc(alt) + "\">";
+    private static String img(String svg, String alt) {
+        return "<img src=\"data:image/svg+xml;base64," + Base64.getEncoder().encodeToString(svg.getBytes(
+                StandardCharsets.UTF_8)) + "\" alt=\"" + esc(alt) + "\" width=\"" + FigurePainter.WIDTH
+                + "\" height=\"" + FigurePainter.HEIGHT + "\">";
     }
 
     private static void kv(StringBuilder h, String k, String v) {

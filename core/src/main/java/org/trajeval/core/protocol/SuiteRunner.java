@@ -169,14 +169,12 @@ public final class SuiteRunner {
         }
 
         List<Callable<Outcome>> tasks = new ArrayList<>();
-        long plotSeed = seeds.common().get(0);
         for (MethodSpec ms : m.methods()) {
             for (SequenceSpec s : evaluated) {
                 for (long seed : seeds.common()) {
                     String rel = ms.estimateFor(s.id(), seed);
                     Path file = inside(base, rel, source, "methods[" + m.methods().indexOf(ms) + "].estimates");
-                    tasks.add(() -> runOne(m, manifestFile, ms, s, seed, rel, file, references.get(s.id()),
-                            seed == plotSeed));
+                    tasks.add(() -> runOne(m, manifestFile, ms, s, seed, rel, file, references.get(s.id()), true));
                 }
             }
         }
@@ -278,11 +276,14 @@ public final class SuiteRunner {
             int k = (ref.size() + step - 1) / step;
             double[] rx = new double[k];
             double[] ry = new double[k];
+            double[] rz = new double[k];
             for (int i = 0, j = 0; i < ref.size(); i += step, j++) {
                 rx[j] = ref.x(i);
                 ry[j] = ref.y(i);
+                rz[j] = ref.z(i);
             }
-            plots.add(new SequencePlot(s.id(), rx, ry, traces));
+            plots.add(new SequencePlot(s.id(), references.get(s.id()).indexTimestamps() ? "frame" : "s", rx, ry, rz,
+                    traces));
         }
         return new Result(report, plots);
     }
@@ -445,20 +446,17 @@ public final class SuiteRunner {
                 double rz = ref.z(j0) + w * (ref.z(j1) - ref.z(j0));
                 err = Math.sqrt((ax - rx) * (ax - rx) + (ay - ry) * (ay - ry) + (az - rz) * (az - rz));
             }
-            pts.add(new double[] {ax, ay, ti, err});
+            pts.add(new double[] {ax, ay, az, ti - ref.t(0), err});
             k++;
         }
-        double[] x = new double[k];
-        double[] y = new double[k];
-        double[] ts = new double[k];
-        double[] e = new double[k];
+        double[][] c = new double[5][k];
         for (int i = 0; i < k; i++) {
-            x[i] = pts.get(i)[0];
-            y[i] = pts.get(i)[1];
-            ts[i] = pts.get(i)[2];
-            e[i] = pts.get(i)[3];
+            for (int j = 0; j < 5; j++) {
+                c[j][i] = pts.get(i)[j];
+            }
         }
-        return new SequencePlot.Trace(method, seed, x, y, ts, e);
+        String model = rep.alignment() == null ? "none" : rep.alignment().model();
+        return new SequencePlot.Trace(method, seed, c[0], c[1], c[2], c[3], c[4], model);
     }
 
     /** The protocol as run; metric settings resolved for the references' data kind (an estimate may add its own). */

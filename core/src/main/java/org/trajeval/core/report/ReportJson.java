@@ -72,6 +72,11 @@ public final class ReportJson {
      * A reader never sees a half-written file.
      */
     public static void writeAtomically(Path target, String text) {
+        writeAtomically(target, text.getBytes(StandardCharsets.UTF_8));
+    }
+
+    /** As {@link #writeAtomically(Path, String)}, for bytes (images, gzip files). */
+    public static void writeAtomically(Path target, byte[] bytes) {
         Path dir = target.toAbsolutePath().getParent();
         try {
             Files.createDirectories(dir);
@@ -79,7 +84,7 @@ public final class ReportJson {
             try {
                 try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE,
                         StandardOpenOption.TRUNCATE_EXISTING)) {
-                    ch.write(java.nio.ByteBuffer.wrap(text.getBytes(StandardCharsets.UTF_8)));
+                    ch.write(java.nio.ByteBuffer.wrap(bytes));
                     ch.force(true);
                 }
                 try {

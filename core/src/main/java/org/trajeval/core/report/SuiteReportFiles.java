@@ -56,6 +56,11 @@ public final class SuiteReportFiles {
     public static SuiteReport parse(String json, String source) {
         SuiteReport r;
         try {
+            com.fasterxml.jackson.databind.JsonNode tree = READER.readTree(json);
+            if (tree != null && EvaluationReport.SCHEMA.equals(tree.path("schema").asText(null))) {
+                throw new IllegalArgumentException(source + ": an evaluation report (trajeval eval --out), not a "
+                        + "suite report; trajeval res compares evaluation results");
+            }
             r = READER.readValue(json, SuiteReport.class);
         } catch (JsonProcessingException e) {
             throw new org.trajeval.core.InputException(source, 0, null, org.trajeval.core.InputProblem.UNKNOWN_FORMAT,

@@ -171,9 +171,13 @@ class SuiteRunnerTest {
     }
 
     @Test
-    void plotsHaveOneTracePerMethodPerSequence() {
+    void plotsHaveOneTracePerMethodAndSeedPerSequenceOnRelativeTime() {
         assertEquals(8, result.plots().size());
-        result.plots().forEach(p -> assertEquals(3, p.estimates().size()));
+        result.plots().forEach(p -> assertEquals(3 * 5, p.estimates().size())); // 3 methods, 5 common seeds
+        result.plots().forEach(p -> assertEquals("s", p.timeUnit()));
+        // times count from the reference's first stamp, not from the Unix epoch
+        double t0 = result.plots().get(0).estimates().get(0).t()[0];
+        assertTrue(t0 >= 0 && t0 < 1.0, "first time " + t0);
         // error of the plotted alpha run is small: its drift is 6 mm/s over 60 s
         double[] e = result.plots().get(0).estimates().get(0).errorM();
         assertNotNull(e);

@@ -1,0 +1,139 @@
+package org.trajeval.cli;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.Paths;
+import java.util.Arrays;
+import java.util.List;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.trajeval.core.report.ResultSet;
+import org.trajeval.core.report.SavedEvaluation;
+import org.trajeval.core.report.SavedResults;
+import org.trajeval.figures.EvalFigures;
+import org.trajeval.figures.Figure;
+import org.trajeval.figures.PlotPlane;
+
+/**
+ * {@code eval --plot / --save-series} and {@code res} on the real data of ../shared/refdata (KITTI
+ * 00 with the ORB-SLAM and S-PTAM estimates, and evo's own --save_results archives of the same
+ * pairs). Golden tests: they fail, not skip, when the data is missing.
+ */
+class PlotAndResOnRealDataTest {
+    /** evo's and trajeval's per-pose errors agree to the alignment's floating-point noise (m). */
+    private static final double SAME_ERROR_M = 1e-6;
+
+    @TempDir
+    static Path dir;
+    private static Path refdata;
+
+    @BeforeAll
+    static void saveKittiOrb() {
+        refdata = Paths.get(System.getProperty("trajeval.refdata", "../../shared/refdata"));
+        assertTrue(Files.isRegularFile(refdata.resolve("evo_results/orb_ape.zip")),
+                "../shared/refdata/evo_results is missing: " + refdata.toAbsolutePath());
+        // evo's archives: APE with SE(3) Umeyama alignment; RPE over 10 m, consecutive pairs (info.json titles)
+        SuiteCommandsTest.Run r = SuiteCommandsTest.run("eval", refdata.resolve("KITTI_00_gt.txt").toString(),
+                refdata.resolve("KITTI_00_ORB.txt").toString(), "--convention", "evo", "--align", "se3",
+                "--rpe-delta", "10", "--rpe-unit", "m", "--drift", "--save-series", dir.resolve("orb").toString(),
+                "--plot", dir.resolve("orb-plots").toString());
+        assertEquals(0, r.code(), r.err());
+    }
+
+    @Test
+    void kittiIsDrawnInXzAgainstFrames() {
+        SavedEvaluation s = SavedEvaluation.read(dir.resolve("orb"));
+        assertEquals("frame", s.series().timeUnit()); // KITTI has no stamps: frames, not "time (s)"
+        List<Figure> figs = EvalFigures.of(s, PlotPlane.AUTO);
+        assertEquals("z (m)", figs.get(0).y().label());
+        assertEquals("frame", figs.get(1).x().label());
+        assertTrue(figs.stream().anyMatch(f -> f.name().equals("drift_rot")));
+        for (Figure f : figs) {
+            assertTrue(Files.isRegularFile(dir.resolve("orb-plots/" + f.name() + ".svg")), f.name());
+            assertTrue(Files.isRegularFile(dir.resolve("orb-plots/" + f.name() + ".png")), f.name());
+        }
+        assertTrue(Files.isRegularFile(dir.resolve("orb-plots/index.html")));
+    }
+
+    @Test
+    void evoApeArchiveHoldsTrajevalsPerPoseErrors() {
+        ResultSet evo = SavedResults.read(refdata.resolve("evo_results/orb_ape.zip"), "evo");
+        ResultSet ours = SavedResults.read(dir.resolve("orb"), "trajeval");
+        double[] a = evo.of(ResultSet.Kind.ATE_TRANS).values();
+        double[] b = ours.of(ResultSet.Kind.ATE_TRANS).values();
+        assertEquals(4541, a.length);
+        assertArrayEquals(a, b, SAME_ERROR_M);
+        assertEquals(1.3034497145650266, ours.of(ResultSet.Kind.ATE_TRANS).stats().rmse(), SAME_ERROR_M); // stats.json
+    }
+
+    @Test
+    void evoRpeArchiveIsTrajevalsPairsWithoutTheFirst() {
+        // The archive's evo (2018) starts its 10 m pairs at the first pose 10 m along the estimate's path,
+        // not at pose 0: its 353 pairs are trajeval's 354 without the first (checked by hand: a pure
+        // Python re-computation of evo's rule on these files matched the archive to 1e-13 m).
+        double[] evo = SavedResults.read(refdata.resolve("evo_results/orb_rpe.zip"), "evo")
+                .of(ResultSet.Kind.RPE_TRANS).values();
+        double[] ours = SavedResults.read(dir.resolve("orb"), "trajeval").of(ResultSet.Kind.RPE_TRANS).values();
+        assertEquals(353, evo.length);
+        assertEquals(354, ours.length);
+        assertArrayEquals(evo, Arrays.copyOfRange(ours, 1, ours.length), 1e-9);
+    }
+
+    @Test
+    void resTablesPutEvoAndTrajevalSideBySide() throws Exception {
+        SuiteCommandsTest.Run r = SuiteCommandsTest.run("res", "evo=" + refdata.resolve("evo_results/orb_ape.zip"),
+                "trajeval=" + dir.resolve("orb"), "--plot", dir.resolve("res").toString());
+        assertEquals(0, r.code(), r.err());
+        List<String> ate = r.out().lines().filter(l -> l.matches("(evo|trajeval) .*")).limit(2).toList();
+        assertEquals(2, ate.size(), r.out());
+        // same RMSE, mean, median, std, min and max to the 6 digits shown
+        assertEquals(ate.get(0).replaceFirst("^evo\\s+evo\\s+", ""),
+                ate.get(1).replaceFirst("^trajeval\\s+trajeval\\s+", ""));
+        assertTrue(Files.isRegularFile(dir.resolve("res/res_ate_trans_box.svg")));
+        String md = SuiteCommandsTest.run("res", dir.resolve("orb").toString(), "--format", "markdown").out();
+        assertTrue(md.contains("| orb | trajeval | 1.30345 |"), md);
+        String tex = SuiteCommandsTest.run("res", "my_run=" + dir.resolve("orb"), "--format", "latex").out();
+        assertTrue(tex.contains("my\\_run & trajeval & 1.30345"), tex);
+        String csv = SuiteCommandsTest.run("res", dir.resolve("orb").toString(), "--format", "csv").out();
+        assertTrue(csv.startsWith("name,origin,source,metric,rmse,mean,median,std,min,max,n\n"), csv);
+    }
+
+    @Test
+    void seedsOfOneNameGetTheirSpread() {
+        SuiteCommandsTest.Run r = SuiteCommandsTest.run("res", "orb=" + dir.resolve("orb"),
+                "orb=" + refdata.resolve("evo_results/orb_ape.zip"));
+        assertTrue(r.out().contains("RMSE over the results of one name (seeds)"), r.out());
+        assertTrue(r.out().lines().anyMatch(l -> l.matches("orb\\s+2\\s+1\\.30345 .*")), r.out());
+    }
+
+    @Test
+    void aFileThatIsNoResultIsRefusedInOneLine() throws Exception {
+        Path bad = dir.resolve("notes.txt");
+        Files.writeString(bad, "hello\n");
+        SuiteCommandsTest.Run r = SuiteCommandsTest.run("res", bad.toString());
+        assertEquals(ExitCodes.BAD_INPUT, r.code());
+        assertEquals(1, r.err().strip().lines().count(), r.err());
+        assertTrue(r.err().contains("notes.txt: a --save-series folder, an eval --out .json or an evo"), r.err());
+        Path zip = dir.resolve("fake.zip");
+        Files.writeString(zip, "not a zip");
+        SuiteCommandsTest.Run z = SuiteCommandsTest.run("res", zip.toString());
+        assertEquals(ExitCodes.BAD_INPUT, z.code());
+        assertTrue(z.err().contains("fake.zip: not a zip archive or empty"), z.err());
+    }
+
+    @Test
+    void compareOnEvaluationReportsPointsToResInsteadOfLeakingAParserMessage() throws Exception {
+        Path json = dir.resolve("orb.json");
+        Files.copy(dir.resolve("orb/report.json"), json);
+        SuiteCommandsTest.Run r = SuiteCommandsTest.run("compare", json.toString(), json.toString());
+        assertEquals(ExitCodes.BAD_INPUT, r.code());
+        assertTrue(r.err().contains("orb.json: an evaluation report (trajeval eval --out), not a suite report; "
+                + "trajeval res compares evaluation results"), r.err());
+        assertTrue(!r.err().contains("deserialize"), r.err());
+    }
+}
