@@ -10,11 +10,11 @@ import picocli.CommandLine.Command;
 @Command(name = "trajeval", mixinStandardHelpOptions = true, versionProvider = TrajevalCommand.VersionProvider.class,
         description = "Scores robot trajectories against ground truth (ATE, RPE, drift) and runs benchmark suites.",
         subcommands = {EvalCommand.class, SuiteCommand.class, CompareCommand.class, SplitsCommand.class,
-            DemoCommand.class},
+            DemoCommand.class, DbCommand.class, GateCommand.class},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success", "1:internal error (a bug; rerun with --verbose and report it)",
             "2:bad input or usage (the message names file, line and what was expected)",
-            "3:leakage found (splits check)"})
+            "3:leakage found (splits check)", "5:regression found (gate)"})
 public final class TrajevalCommand implements Runnable {
 
     @CommandLine.Spec
@@ -54,7 +54,7 @@ public final class TrajevalCommand implements Runnable {
             PrintWriter err = cl.getErr();
             boolean verbose = isVerbose(parsed);
             if (ex instanceof InputException || ex instanceof IllegalArgumentException
-                    || ex instanceof java.io.UncheckedIOException) {
+                    || ex instanceof java.io.UncheckedIOException || ex instanceof org.trajeval.store.StoreException) {
                 err.println("trajeval: " + ex.getMessage());
                 if (verbose) {
                     ex.printStackTrace(err);
