@@ -10,7 +10,7 @@ import picocli.CommandLine.Command;
 @Command(name = "trajeval", mixinStandardHelpOptions = true, versionProvider = TrajevalCommand.VersionProvider.class,
         description = "Scores robot trajectories against ground truth (ATE, RPE, drift) and runs benchmark suites.",
         subcommands = {EvalCommand.class, SuiteCommand.class, CompareCommand.class, SplitsCommand.class,
-            DemoCommand.class, DbCommand.class, GateCommand.class},
+            DemoCommand.class, DbCommand.class, GateCommand.class, TrendCommand.class},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success", "1:internal error (a bug; rerun with --verbose and report it)",
             "2:bad input or usage (the message names file, line and what was expected)",

@@ -100,6 +100,19 @@ class GateCommandTest {
     }
 
     @Test
+    void trendByVersionFlagsAlphaWhoseLatestVersionRanBetasEstimates() throws IOException {
+        Path page = dir.resolve("trend.html");
+        Run r = run("trend", "--db", db.toString(), "--metric", "ate_trans_rmse_m", "--by", "method", "--bucket",
+                "version", "--html", page.toString());
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.out().lines().anyMatch(l -> l.startsWith("alpha") && l.contains("latest") && l.endsWith("WORSE")),
+                r.out());
+        assertTrue(r.out().lines().filter(l -> l.contains("latest") && !l.startsWith("alpha"))
+                .noneMatch(l -> l.endsWith("WORSE")), r.out());
+        assertTrue(Files.readString(page).contains("alpha &#8212; WORSE"));
+    }
+
+    @Test
     void importingTheReportsAgainChangesNothing() {
         Run r = run("db", "import", dir.resolve("base").toString(), "--db", db.toString(), "--tag",
                 "software_version=2.3");
