@@ -106,7 +106,7 @@ public final class ReportRecords {
                 tags.put(e.getKey(), e.getValue().asText());
             }
         }
-        String key = sha256("pipeline", content, labels.canonical());
+        String key = pipelineKey(content, labels);
         JsonNode seed = n.get("seed");
         JsonNode version = n.get("run_version");
         return new RunRecord(key, "pipeline", text(n, "run_id"), version == null ? null : version.asInt(), content,
@@ -114,6 +114,11 @@ public final class ReportRecords {
                 labels.column("route", text(n, "sequence")), text(n, "method"),
                 labels.column("software_version", text(n, "software_version")),
                 seed == null || seed.isNull() ? null : seed.asLong(), at, true, null, metrics, source, tags);
+    }
+
+    /** @return the row key of a pipeline report with this content hash and these labels */
+    public static String pipelineKey(String contentSha256, Labels labels) {
+        return sha256("pipeline", contentSha256, labels.canonical());
     }
 
     /**

@@ -68,7 +68,10 @@ public final class KafkaMode {
                     k.deadLetterTopic(), instance, base, layout.root().resolve("kafka-work").resolve(instance),
                     k.sessionTimeoutMs(), k.transactionTimeoutMs(), c.workers());
             PipelineMetrics metrics = PipelineMetrics.prometheus();
-            RunProcessor processor = new RunProcessor(scorer, new ReportStore(layout.reports(), ledger, Clock.systemUTC()));
+            // the results store recorder (a daemon; an unrecorded report is replayed from the ledger at the next start)
+            RunProcessor processor = new RunProcessor(scorer, org.trajeval.pipeline.store.ResultsRecorder.attach(c,
+                    new ReportStore(layout.reports(), ledger, Clock.systemUTC()), metrics.storeLag(), System.getenv())
+                    .reports());
             KafkaService service = new KafkaService(s, processor, c.bundleLimits(), metrics, Clock.systemUTC());
             HttpEndpoint http = c.http().enabled()
                     ? HttpEndpoint.start(c.http().host(), c.http().port(), metrics::scrape, () -> true) : null;

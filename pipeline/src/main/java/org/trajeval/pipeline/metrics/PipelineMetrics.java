@@ -19,7 +19,8 @@ import org.trajeval.pipeline.Outcome;
  * processing time per run [{@code trajeval_pipeline_run_duration_seconds} histogram], complete
  * bundles waiting in incoming/ [{@code trajeval_pipeline_queue_depth}], bundles claimed and not
  * finished [{@code trajeval_pipeline_in_processing}], Kafka consumer lag in records
- * [{@code trajeval_pipeline_consumer_lag}].
+ * [{@code trajeval_pipeline_consumer_lag}], committed reports not yet in the results store
+ * [{@code trajeval_pipeline_store_lag}].
  */
 public final class PipelineMetrics {
     private final MeterRegistry registry;
@@ -29,6 +30,7 @@ public final class PipelineMetrics {
     private final AtomicLong queueDepth = new AtomicLong();
     private final AtomicLong inProcessing = new AtomicLong();
     private final AtomicLong consumerLag = new AtomicLong();
+    private final AtomicLong storeLag = new AtomicLong();
 
     private PipelineMetrics(MeterRegistry registry, PrometheusMeterRegistry prometheus) {
         this.registry = registry;
@@ -46,6 +48,8 @@ public final class PipelineMetrics {
                 .description("bundles claimed and not finished").register(registry);
         Gauge.builder("trajeval.pipeline.consumer.lag", consumerLag, AtomicLong::get)
                 .description("records behind the end of the input topic (Kafka mode)").register(registry);
+        Gauge.builder("trajeval.pipeline.store.lag", storeLag, AtomicLong::get)
+                .description("committed reports not yet recorded in the results store").register(registry);
     }
 
     /** @return metrics exposed in the Prometheus text format */
@@ -83,6 +87,11 @@ public final class PipelineMetrics {
     /** @return the gauge of consumer lag (records) */
     public AtomicLong consumerLag() {
         return consumerLag;
+    }
+
+    /** @return the gauge of committed reports not yet in the results store */
+    public AtomicLong storeLag() {
+        return storeLag;
     }
 
     /** @return the Prometheus text exposition, or an empty string when not Prometheus-backed */
