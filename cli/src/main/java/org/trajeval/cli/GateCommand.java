@@ -38,9 +38,10 @@ import picocli.CommandLine.Spec;
 @Command(name = "gate", mixinStandardHelpOptions = true, sortOptions = false,
         description = {"Regression gate for CI: compares each method of the candidate with the same-named method "
             + "of the baseline, runs paired by (sequence, seed), with the suite's paired statistics.",
-            "A metric regresses when the one-sided --confidence bound of the mean paired difference "
-                + "(candidate - baseline, per sequence, means over the common seeds; bootstrap over sequences, "
-                + "t-interval from 30 sequences) is worse than tolerance x |baseline mean|.",
+            "A metric regresses when the one-sided bound of the mean paired difference (candidate - baseline, "
+                + "per sequence, means over the common seeds; the less favourable of the t-interval and the "
+                + "bootstrap over sequences) is worse than tolerance x |baseline mean|; the k gated (method, metric) "
+                + "pairs share --confidence (Bonferroni: each at 1 - (1 - C) / k).",
             "BASELINE and CANDIDATE are suite reports (report.json or its folder); or, with --db, "
                 + "--baseline and --candidate select stored runs (e.g. software_version=2.3)."},
         exitCodeListHeading = "%nExit codes:%n",
@@ -197,8 +198,8 @@ public final class GateCommand implements Callable<Integer> {
         List<RunEntry> b;
         List<RunEntry> c;
         try (ResultsStore s = store.open()) {
-            b = entries(s.select(bs));
-            c = entries(s.select(cs));
+            b = entries(s.select(bs, false));
+            c = entries(s.select(cs, false));
         }
         if (b.isEmpty() || c.isEmpty()) {
             throw new IllegalArgumentException("gate: no stored run matches " + (b.isEmpty() ? "--baseline "

@@ -20,16 +20,17 @@ final class GateOutput {
 
     static void table(List<Finding> fs, double confidence, PrintWriter out) {
         out.printf(Locale.ROOT, "%-12s %-18s %3s %11s %11s %9s %12s %11s %s%n", "method", "metric", "n", "baseline",
-                "candidate", "change", "bound " + pct(confidence), "margin", "verdict");
+                "candidate", "change", "bound", "margin", "verdict");
         for (Finding f : fs) {
             out.printf(Locale.ROOT, "%-12s %-18s %3d %11s %11s %9s %12s %11s %s%n", f.method(), f.metric(), f.n(),
                     num(f.baselineMean()), num(f.candidateMean()), change(f),
                     num(f.bound()), (f.higherIsBetter() ? "-" : "+") + num(f.margin()),
                     f.verdict().name().toLowerCase(Locale.ROOT));
         }
-        out.println("gate: " + headline(fs) + "; rule: a metric regresses when the one-sided " + pct(confidence)
-                + " bound of the mean paired difference (candidate - baseline) is beyond the margin = tolerance x "
-                + "|baseline mean| (lower bound > +margin; the score: upper bound < -margin)");
+        out.println("gate: " + headline(fs) + "; rule: a metric regresses when the one-sided bound of the mean "
+                + "paired difference (candidate - baseline; " + pct(confidence) + " shared by the " + fs.size()
+                + " rows, Bonferroni) is beyond the margin = tolerance x |baseline mean| (lower bound > +margin; "
+                + "the score: upper bound < -margin)");
     }
 
     static String markdown(List<Finding> fs, double confidence, String baseline, String candidate) {

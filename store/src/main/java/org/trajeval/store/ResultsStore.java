@@ -229,7 +229,15 @@ public final class ResultsStore implements AutoCloseable {
     }
 
     /** @return every stored result the selection takes (tags included), ordered by method, route, seed, key */
-    public synchronized List<RunRecord> select(Selection selection) {
+    public List<RunRecord> select(Selection selection) {
+        return select(selection, true);
+    }
+
+    /**
+     * @param withTags whether to read the tags too (the gate needs none: one query instead of one per 500 rows)
+     * @return every stored result the selection takes, ordered by method, route, seed, key
+     */
+    public synchronized List<RunRecord> select(Selection selection, boolean withTags) {
         StringBuilder sql = new StringBuilder("SELECT ").append(LABELS.replace("result_sha256", "r.result_sha256"));
         for (String m : StoredMetric.keys()) {
             sql.append(", ").append(m);
@@ -246,7 +254,7 @@ public final class ResultsStore implements AutoCloseable {
                     rows.add(read(rs));
                 }
             }
-            return withTags(rows);
+            return withTags ? withTags(rows) : rows;
         } catch (SQLException e) {
             throw failure("cannot select results " + selection, e);
         }
