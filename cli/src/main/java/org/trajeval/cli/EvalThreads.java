@@ -6,6 +6,8 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import org.trajeval.core.io.LoadedTrajectory;
+import org.trajeval.core.io.ReadOptions;
+import org.trajeval.core.io.TrajectoryReader;
 
 /**
  * The threads of one {@code trajeval eval}: the two files are read at once when a second thread is
@@ -36,14 +38,15 @@ final class EvalThreads implements AutoCloseable {
     }
 
     /** Reads the reference and the estimate, the estimate on a second thread when there is one. */
-    LoadedTrajectory[] both(InputOptions input, Path reference, Path estimate) {
+    LoadedTrajectory[] both(ReadOptions refOptions, Path reference, ReadOptions estOptions, Path estimate) {
         if (pool == null) {
-            return new LoadedTrajectory[] {input.read(reference, true), input.read(estimate, false)};
+            return new LoadedTrajectory[] {TrajectoryReader.read(reference, refOptions),
+                TrajectoryReader.read(estimate, estOptions)};
         }
-        Future<LoadedTrajectory> est = pool.submit(() -> input.read(estimate, false));
+        Future<LoadedTrajectory> est = pool.submit(() -> TrajectoryReader.read(estimate, estOptions));
         LoadedTrajectory ref;
         try {
-            ref = input.read(reference, true);
+            ref = TrajectoryReader.read(reference, refOptions);
         } catch (RuntimeException e) {
             est.cancel(true);
             throw e;

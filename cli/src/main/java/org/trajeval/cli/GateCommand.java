@@ -277,7 +277,7 @@ public final class GateCommand implements Callable<Integer> {
     static final class PairByConverter implements picocli.CommandLine.ITypeConverter<PairBy> {
         @Override
         public PairBy convert(String v) {
-            return Enums.parse(PairBy.class, v, "route-seed|robot-route");
+            return EnumWords.parse(PairBy.class, v, "route-seed|robot-route");
         }
     }
 }

@@ -11,7 +11,7 @@ import org.trajeval.core.protocol.RunEngine;
 import org.trajeval.core.protocol.SuiteRunner;
 import org.trajeval.core.report.SuiteReport;
 import org.trajeval.core.report.SuiteReportFiles;
-import org.trajeval.core.report.html.SuiteHtml;
+import org.trajeval.figures.SuiteHtml;
 import org.trajeval.store.Labels;
 import org.trajeval.store.ReportRecords;
 import org.trajeval.store.ResultsStore;

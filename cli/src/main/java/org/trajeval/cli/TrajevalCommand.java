@@ -33,6 +33,7 @@ public final class TrajevalCommand implements Runnable {
     /** @return the configured command line (used by tests with their own out/err writers) */
     public static CommandLine newCommandLine() {
         CommandLine cl = new CommandLine(new TrajevalCommand());
+        SettingOptions.addTo(cl.getSubcommands().get("eval").getCommandSpec());
         cl.setExecutionExceptionHandler(new ErrorHandler());
         cl.setParameterExceptionHandler(TrajevalCommand::usageError);
         cl.setExitCodeExceptionMapper(t -> t instanceof InputException ? ExitCodes.BAD_INPUT : ExitCodes.INTERNAL);

@@ -123,7 +123,7 @@ public final class TrendCommand implements Callable<Integer> {
     static final class BucketConverter implements picocli.CommandLine.ITypeConverter<TrendBucket> {
         @Override
         public TrendBucket convert(String v) {
-            return Enums.parse(TrendBucket.class, v, "day|week|version");
+            return EnumWords.parse(TrendBucket.class, v, "day|week|version");
         }
     }
 }

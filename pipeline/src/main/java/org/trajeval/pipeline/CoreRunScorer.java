@@ -1,22 +1,22 @@
 package org.trajeval.pipeline;
 
-import java.util.Locale;
-import org.trajeval.core.align.AlignmentModel;
-import org.trajeval.core.assoc.AssociationMethod;
-import org.trajeval.core.eval.Convention;
-import org.trajeval.core.eval.EvaluationOptions;
+import org.trajeval.core.InputException;
+import org.trajeval.core.InputProblem;
 import org.trajeval.core.eval.Evaluator;
 import org.trajeval.core.io.LoadedTrajectory;
 import org.trajeval.core.io.ReadOptions;
 import org.trajeval.core.io.TrajectoryReader;
-import org.trajeval.core.metric.RpeUnit;
+import org.trajeval.core.options.DataKind;
+import org.trajeval.core.options.FileRole;
+import org.trajeval.core.options.PathResolver;
+import org.trajeval.core.options.SettingsResolver;
 import org.trajeval.core.report.EvaluationReport;
-import org.trajeval.core.traj.PlanarTrajectory;
+import org.trajeval.pipeline.bundle.RunFields;
 
 /**
- * The real scorer: {@link TrajectoryReader} for both files (format auto-detected, size limited)
- * and {@link Evaluator} with the run's settings on top of the convention's preset (lesson by
- * default).
+ * The real scorer: {@link TrajectoryReader} for both files and {@link Evaluator}, with the run's
+ * settings resolved by the core's {@link SettingsResolver} exactly as {@code trajeval eval} and
+ * {@code trajeval suite} resolve theirs; file sizes limited by the pipeline's configuration.
  */
 public final class CoreRunScorer implements RunScorer {
     private final long maxFileBytes;
@@ -28,11 +28,30 @@ public final class CoreRunScorer implements RunScorer {
 
     @Override
     public EvaluationReport score(RunJob job) {
-        ReadOptions read = ReadOptions.defaults().withLimits(maxFileBytes, ReadOptions.DEFAULT_MAX_POSES);
-        LoadedTrajectory ref = named(TrajectoryReader.read(job.reference(), read), job);
-        LoadedTrajectory est = named(TrajectoryReader.read(job.estimate(), read), job);
-        boolean planar = ref.trajectory() instanceof PlanarTrajectory && est.trajectory() instanceof PlanarTrajectory;
-        return Evaluator.evaluate(ref, est, options(job.settings(), planar));
+        LoadedTrajectory ref = named(TrajectoryReader.read(job.reference(),
+                readOptions(job, FileRole.REFERENCE, maxFileBytes)), job);
+        LoadedTrajectory est = named(TrajectoryReader.read(job.estimate(),
+                readOptions(job, FileRole.ESTIMATE, maxFileBytes)), job);
+        return Evaluator.evaluate(ref, est, SettingsResolver.evaluationOptions(job.settings(),
+                DataKind.of(ref.trajectory(), est.trajectory())));
+    }
+
+    /**
+     * @return the read options of one file of the run: its settings, path settings resolved inside
+     *     the bundle folder (a run without one cannot name files)
+     * @throws InputException when a path setting leaves the bundle or has no bundle
+     */
+    public static ReadOptions readOptions(RunJob job, FileRole role, long maxFileBytes) {
+        String source = job.settings().source() != null ? job.settings().source() : job.source();
+        PathResolver paths = (text, where) -> {
+            if (job.folder() == null) {
+                throw new InputException(source, 0, where, InputProblem.INVALID_CONFIGURATION,
+                        "'" + where + "' names a file, which only a bundle can carry", text);
+            }
+            return RunFields.fileInBundle(job.folder(), text, source, where, maxFileBytes);
+        };
+        return SettingsResolver.readOptions(job.settings(), role,
+                ReadOptions.defaults().withLimits(maxFileBytes, ReadOptions.DEFAULT_MAX_POSES), paths);
     }
 
     /**
@@ -43,38 +62,5 @@ public final class CoreRunScorer implements RunScorer {
         String name = job.source() + "/" + java.nio.file.Paths.get(t.source()).getFileName();
         return new LoadedTrajectory(name, t.format(), t.formatReason(), t.trajectory(), t.sha256(),
                 t.indexTimestamps());
-    }
-
-    /** As {@link #options(MetricSettings, boolean)} for planar data. */
-    static EvaluationOptions options(MetricSettings s) {
-        return options(s, true);
-    }
-
-    /**
-     * @return the evaluation options of the settings: the convention's preset for the data
-     *     (lesson: se2 for planar, se3 for SE(3) data), then each given setting
-     */
-    static EvaluationOptions options(MetricSettings s, boolean planarData) {
-        Convention convention = s.convention() == null ? Convention.LESSON
-                : Convention.valueOf(s.convention().toUpperCase(Locale.ROOT));
-        EvaluationOptions o = EvaluationOptions.preset(convention, planarData);
-        if (s.alignment() != null) {
-            o = o.withAlignment(AlignmentModel.valueOf(s.alignment().toUpperCase(Locale.ROOT)));
-        }
-        if (s.association() != null) {
-            o = o.withAssociation(AssociationMethod.valueOf(s.association().toUpperCase(Locale.ROOT)));
-        }
-        if (s.maxDiffS() != null) {
-            o = o.withMaxDiffS(s.maxDiffS());
-        }
-        if (s.rpeDelta() != null || s.rpeUnit() != null) {
-            RpeUnit unit = s.rpeUnit() == null ? o.rpeUnit() : switch (s.rpeUnit()) {
-                case "s" -> RpeUnit.SECONDS;
-                case "frames" -> RpeUnit.FRAMES;
-                default -> RpeUnit.METRES;
-            };
-            o = o.withRpe(s.rpeDelta() == null ? o.rpeDelta() : s.rpeDelta(), unit);
-        }
-        return o;
     }
 }

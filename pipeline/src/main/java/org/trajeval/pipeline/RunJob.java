@@ -2,6 +2,7 @@ package org.trajeval.pipeline;
 
 import java.nio.file.Path;
 import java.util.Objects;
+import org.trajeval.core.options.SettingValues;
 
 /**
  * One run ready to score: its identity, the two trajectory files (already checked to lie inside
@@ -10,10 +11,13 @@ import java.util.Objects;
  * @param metadata run identity
  * @param reference reference (ground truth) trajectory file
  * @param estimate estimated trajectory file
- * @param settings metric settings
+ * @param settings checked evaluation settings
  * @param source where the run came from, for logs and the report (bundle name, or topic-partition@offset)
+ * @param folder the bundle folder path settings (ref_times, est_times) are resolved in, or
+ *     {@code null} when the run has none (a bare pair, an inline event)
  */
-public record RunJob(RunMetadata metadata, Path reference, Path estimate, MetricSettings settings, String source) {
+public record RunJob(RunMetadata metadata, Path reference, Path estimate, SettingValues settings, String source,
+        Path folder) {
     /** @throws NullPointerException on a missing component */
     public RunJob {
         Objects.requireNonNull(metadata, "metadata");
@@ -21,5 +25,10 @@ public record RunJob(RunMetadata metadata, Path reference, Path estimate, Metric
         Objects.requireNonNull(estimate, "estimate");
         Objects.requireNonNull(settings, "settings");
         Objects.requireNonNull(source, "source");
+    }
+
+    /** A run without a bundle folder. */
+    public RunJob(RunMetadata metadata, Path reference, Path estimate, SettingValues settings, String source) {
+        this(metadata, reference, estimate, settings, source, null);
     }
 }

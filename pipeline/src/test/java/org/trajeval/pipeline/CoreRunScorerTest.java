@@ -5,10 +5,15 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.nio.file.Path;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.trajeval.core.InputException;
 import org.trajeval.core.InputProblem;
+import org.trajeval.core.options.DataKind;
+import org.trajeval.core.options.SettingText;
+import org.trajeval.core.options.SettingValues;
+import org.trajeval.core.options.SettingsResolver;
 import org.trajeval.core.report.EvaluationReport;
 
 class CoreRunScorerTest {
@@ -24,7 +29,7 @@ class CoreRunScorerTest {
         Fixtures.writeTrajectory(dir.resolve("gt.csv"), 200, 0.0, 1);
         Fixtures.writeTrajectory(dir.resolve("est.csv"), 200, 0.0, 1);
         EvaluationReport r = new CoreRunScorer(1 << 20).score(new RunJob(RunMetadata.ofName("r"), dir.resolve("gt.csv"),
-                dir.resolve("est.csv"), MetricSettings.DEFAULTS, "test"));
+                dir.resolve("est.csv"), SettingValues.DEFAULTS, "test"));
         assertEquals(0.0, r.ate().transM().rmse(), ZERO_TOL_M);
         assertEquals("lesson", r.convention());
         assertEquals(200, r.inputs().reference().poses());
@@ -32,7 +37,12 @@ class CoreRunScorerTest {
 
     @Test
     void runSettingsOverrideTheConventionPreset() {
-        var o = CoreRunScorer.options(new MetricSettings("evo", "se2", null, 0.02, 5.0, "frames"));
+        SettingValues s = SettingValues.of(List.of(new SettingText("convention", "evo", "metrics.convention"),
+                new SettingText("alignment", "se2", "metrics.alignment"),
+                new SettingText("max_diff_s", "0.02", "metrics.max_diff_s"),
+                new SettingText("rpe_delta", "5", "metrics.rpe_delta"),
+                new SettingText("rpe_unit", "frames", "metrics.rpe_unit")), "run.yaml");
+        var o = SettingsResolver.evaluationOptions(s, DataKind.PLANAR);
         assertEquals(org.trajeval.core.align.AlignmentModel.SE2, o.alignment());
         assertEquals(0.02, o.maxDiffS());
         assertEquals(5.0, o.rpeDelta());
@@ -41,8 +51,8 @@ class CoreRunScorerTest {
 
     @Test
     void unknownSettingIsRefusedNamingTheField() {
-        InputException e = assertThrows(InputException.class,
-                () -> new MetricSettings(null, "se4", null, null, null, null));
+        InputException e = assertThrows(InputException.class, () -> SettingValues.of(
+                List.of(new SettingText("alignment", "se4", "metrics.alignment")), "run.yaml"));
         assertEquals("metrics.alignment", e.column());
         assertEquals(InputProblem.INVALID_CONFIGURATION, e.problem());
     }

@@ -18,7 +18,7 @@ public final class TestScorers {
             Fixtures.writeTrajectory(dir.resolve("a.csv"), 50, 0.0, 1);
             Fixtures.writeTrajectory(dir.resolve("b.csv"), 50, 0.05, 2);
             new CoreRunScorer(1 << 20).score(new RunJob(RunMetadata.ofName("probe"), dir.resolve("a.csv"),
-                    dir.resolve("b.csv"), MetricSettings.DEFAULTS, "probe"));
+                    dir.resolve("b.csv"), org.trajeval.core.options.SettingValues.DEFAULTS, "probe"));
             return true;
         } catch (UnsupportedOperationException e) {
             return false;

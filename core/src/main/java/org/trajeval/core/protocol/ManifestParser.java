@@ -14,20 +14,19 @@ import java.util.Iterator;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Set;
 import java.util.TreeSet;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.trajeval.core.InputException;
 import org.trajeval.core.InputProblem;
-import org.trajeval.core.align.AlignmentModel;
-import org.trajeval.core.assoc.AssociationMethod;
-import org.trajeval.core.assoc.OverlapPolicy;
-import org.trajeval.core.eval.Convention;
-import org.trajeval.core.eval.EvaluationOptions;
-import org.trajeval.core.metric.DriftOptions;
-import org.trajeval.core.metric.PairSelection;
-import org.trajeval.core.metric.RpeUnit;
+import org.trajeval.core.options.DataKind;
+import org.trajeval.core.options.Setting;
+import org.trajeval.core.options.SettingText;
+import org.trajeval.core.options.SettingValues;
+import org.trajeval.core.options.SettingsResolver;
+import org.trajeval.core.options.SettingsTree;
 
 /**
  * Reads a suite manifest (YAML) strictly: every unknown key, missing key, wrong type and
@@ -46,7 +45,7 @@ import org.trajeval.core.metric.RpeUnit;
  *   - {id: seq01, session: s01, reference: data/seq01/gt.csv, split: test, tags: [indoor]}
  * methods:
  *   - {name: alpha, estimates: "runs/{method}/{sequence}/seed{seed}.csv"}
- * metrics: {convention: lesson, alignment: se2, rpe: {delta: 1.0, unit: s}}
+ * metrics: {convention: lesson, alignment: se2, rpe: {delta: 1.0, unit: s}}   # any key of Setting
  * failure: {min_coverage: 0.9, max_ate_trans_rmse_m: 5.0}
  * score:
  *   - {metric: ate_trans_rmse_m, cap: 2.0, weight: 0.5}
@@ -58,6 +57,7 @@ public final class ManifestParser {
     private static final Pattern ID = Pattern.compile("[A-Za-z0-9][A-Za-z0-9._-]*");
     private static final Pattern PLACEHOLDER = Pattern.compile("\\{([^}]*)}");
     private static final Set<String> PLACEHOLDERS = Set.of("method", "sequence", "seed");
+    private static final ObjectMapper TREE = new ObjectMapper();
 
     private final ObjectMapper yaml = new ObjectMapper(new YAMLFactory());
 
@@ -209,19 +209,6 @@ public final class ManifestParser {
             return out;
         }
 
-        <E extends Enum<E>> E choice(Node n, Class<E> type) {
-            String s = n.json().isTextual() ? n.json().asText() : null;
-            List<String> names = new ArrayList<>();
-            for (E e : type.getEnumConstants()) {
-                String key = e.name().toLowerCase(Locale.ROOT);
-                names.add(key);
-                if (key.equals(s)) {
-                    return e;
-                }
-            }
-            throw bad(n.path(), "expected one of " + String.join(", ", names), n.json());
-        }
-
         /** A relative path that stays inside the manifest folder. */
         String relativePath(Node n, String value) {
             String v = value.replace('\\', '/');
@@ -272,7 +259,12 @@ public final class ManifestParser {
                     throw bad(es.path(), "no sequence belongs to the evaluated splits");
                 }
             }
-            EvaluationOptions metrics = metrics(required(root, "metrics"));
+            SettingValues metrics = SettingValues.of(settings(required(root, "metrics")), source);
+            for (SequenceSpec s : sequences) {
+                for (MethodSpec ms : methods) {
+                    check(check(metrics, s.settings()), ms.settings());
+                }
+            }
             FailureDefinition failure = failure(optional(root, "failure"));
             NormalisedScore score = score(required(root, "score"), metrics);
             Budget budget = budget(required(root, "budget"));
@@ -294,7 +286,7 @@ public final class ManifestParser {
             List<SequenceSpec> out = new ArrayList<>();
             Set<String> ids = new HashSet<>();
             for (Node s : list(n, "sequences", true)) {
-                allowOnly(s, "id", "session", "reference", "split", "tags");
+                allowOnly(s, "id", "session", "reference", "split", "tags", "settings");
                 Node idNode = required(s, "id");
                 String id = id(idNode, "a sequence id");
                 if (!ids.add(id)) {
@@ -315,7 +307,8 @@ public final class ManifestParser {
                         tags.add(text(t, "a tag"));
                     }
                 }
-                out.add(new SequenceSpec(id, session, reference, split, tags));
+                Node set = optional(s, "settings");
+                out.add(new SequenceSpec(id, session, reference, split, tags, set == null ? List.of() : settings(set)));
             }
             return out;
         }
@@ -324,7 +317,7 @@ public final class ManifestParser {
             List<MethodSpec> out = new ArrayList<>();
             Set<String> names = new HashSet<>();
             for (Node m : list(n, "methods", true)) {
-                allowOnly(m, "name", "estimates", "seeds");
+                allowOnly(m, "name", "estimates", "seeds", "settings");
                 Node nameNode = required(m, "name");
                 String name = id(nameNode, "a method name");
                 if (!names.add(name)) {
@@ -350,90 +343,28 @@ public final class ManifestParser {
                     throw bad(est.path(), "pattern must contain {seed} when there is more than one seed", est.json());
                 }
                 relativePath(est, pattern.replace("{method}", name).replace("{sequence}", "x").replace("{seed}", "0"));
-                out.add(new MethodSpec(name, pattern, seeds));
+                Node set = optional(m, "settings");
+                out.add(new MethodSpec(name, pattern, seeds, set == null ? List.of() : settings(set)));
             }
             return out;
         }
 
-        EvaluationOptions metrics(Node n) {
-            allowOnly(n, "convention", "association", "max_diff_s", "overlap", "alignment", "rpe", "drift");
-            Node conv = optional(n, "convention");
-            EvaluationOptions o = EvaluationOptions.preset(conv == null ? Convention.LESSON : choice(conv,
-                    Convention.class));
-            try {
-                Node a = optional(n, "association");
-                if (a != null) {
-                    o = o.withAssociation(choice(a, AssociationMethod.class));
-                }
-                Node md = optional(n, "max_diff_s");
-                if (md != null) {
-                    double v = number(md, "a number of seconds > 0");
-                    if (!(v > 0.0)) {
-                        throw bad(md.path(), "expected a number of seconds > 0", md.json());
-                    }
-                    o = o.withMaxDiffS(v);
-                }
-                Node ov = optional(n, "overlap");
-                if (ov != null) {
-                    o = o.withOverlap(choice(ov, OverlapPolicy.class));
-                }
-                Node al = optional(n, "alignment");
-                if (al != null) {
-                    o = o.withAlignment(choice(al, AlignmentModel.class));
-                }
-                Node rpe = optional(n, "rpe");
-                if (rpe != null) {
-                    allowOnly(rpe, "delta", "unit", "pairs");
-                    Node d = required(rpe, "delta");
-                    double delta = number(d, "a horizon > 0");
-                    if (!(delta > 0.0)) {
-                        throw bad(d.path(), "expected a horizon > 0", d.json());
-                    }
-                    RpeUnit unit = o.rpeUnit();
-                    Node u = optional(rpe, "unit");
-                    if (u != null) {
-                        unit = null;
-                        for (RpeUnit ru : RpeUnit.values()) {
-                            if (ru.symbol().equals(u.json().asText())) {
-                                unit = ru;
-                            }
-                        }
-                        if (unit == null || !u.json().isTextual()) {
-                            throw bad(u.path(), "expected one of s, frames, m", u.json());
-                        }
-                    }
-                    if (unit == RpeUnit.FRAMES && delta != Math.rint(delta)) {
-                        throw bad(d.path(), "expected a whole number of frames", d.json());
-                    }
-                    o = o.withRpe(delta, unit);
-                    Node p = optional(rpe, "pairs");
-                    if (p != null) {
-                        o = o.withPairSelection(choice(p, PairSelection.class));
-                    }
-                }
-                Node dr = optional(n, "drift");
-                if (dr != null) {
-                    allowOnly(dr, "segment_lengths_m", "step_frames");
-                    List<Node> ls = list(required(dr, "segment_lengths_m"), "segment lengths (m)", true);
-                    double[] lengths = new double[ls.size()];
-                    for (int i = 0; i < lengths.length; i++) {
-                        lengths[i] = number(ls.get(i), "a segment length > 0 (m)");
-                        if (!(lengths[i] > 0.0)) {
-                            throw bad(ls.get(i).path(), "expected a segment length > 0 (m)", ls.get(i).json());
-                        }
-                    }
-                    Node st = optional(dr, "step_frames");
-                    long step = st == null ? 10 : integer(st, "an integer >= 1");
-                    if (step < 1 || step > Integer.MAX_VALUE) {
-                        throw bad(st.path(), "expected an integer >= 1", st.json());
-                    }
-                    o = o.withDrift(new DriftOptions(lengths, (int) step));
-                }
-            } catch (IllegalArgumentException e) {
-                throw new InputException(source, 0, n.path(), InputProblem.INVALID_CONFIGURATION,
-                        "'" + n.path() + "': " + e.getMessage(), null, e);
+        /**
+         * The evaluation settings of {@code metrics} (or an entry's {@code settings}): every key of
+         * the settings table ({@link Setting}), nested mappings as shorthand ({@code rpe: {delta: 1}}).
+         */
+        List<SettingText> settings(Node n) {
+            if (!n.json().isObject()) {
+                throw bad(n.path(), "expected a mapping of settings (" + Setting.knownKeys() + ")", n.json());
             }
-            return o;
+            @SuppressWarnings("unchecked")
+            Map<String, Object> tree = TREE.convertValue(n.json(), Map.class);
+            return SettingsTree.flatten(tree, n.path(), source);
+        }
+
+        /** Checks the merged settings of one run once, so a bad combination is refused at intake. */
+        SettingValues check(SettingValues base, List<SettingText> more) {
+            return base.with(more, source);
         }
 
         FailureDefinition failure(Node n) {
@@ -465,7 +396,7 @@ public final class ManifestParser {
             return v;
         }
 
-        NormalisedScore score(Node n, EvaluationOptions metrics) {
+        NormalisedScore score(Node n, SettingValues metrics) {
             List<NormalisedScore.Term> terms = new ArrayList<>();
             double sum = 0.0;
             Set<RunMetric> seen = new HashSet<>();
@@ -483,7 +414,7 @@ public final class ManifestParser {
                 if (!seen.add(m)) {
                     throw bad(mn.path(), "metric scored twice", mn.json());
                 }
-                if (m == RunMetric.DRIFT_TRANS_PCT && metrics.drift() == null) {
+                if (m == RunMetric.DRIFT_TRANS_PCT && SettingsResolver.evaluationOptions(metrics, DataKind.SPATIAL).drift() == null) {
                     throw bad(mn.path(), "drift_trans_pct needs metrics.drift settings", mn.json());
                 }
                 Node cn = required(t, "cap");

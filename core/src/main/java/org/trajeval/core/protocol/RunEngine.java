@@ -15,9 +15,10 @@ public interface RunEngine {
      * Reads one trajectory file.
      *
      * @param file the file
+     * @param options how to read it (from the run's settings)
      * @throws org.trajeval.core.InputException on a bad file
      */
-    LoadedTrajectory read(Path file);
+    LoadedTrajectory read(Path file, ReadOptions options);
 
     /**
      * Scores an estimate against a reference.
@@ -26,12 +27,12 @@ public interface RunEngine {
      */
     EvaluationReport evaluate(LoadedTrajectory reference, LoadedTrajectory estimate, EvaluationOptions options);
 
-    /** @return the real engine: {@link TrajectoryReader} with default options and {@link Evaluator} */
+    /** @return the real engine: {@link TrajectoryReader} and {@link Evaluator} */
     static RunEngine standard() {
         return new RunEngine() {
             @Override
-            public LoadedTrajectory read(Path file) {
-                return TrajectoryReader.read(file, ReadOptions.defaults());
+            public LoadedTrajectory read(Path file, ReadOptions options) {
+                return TrajectoryReader.read(file, options);
             }
 
             @Override

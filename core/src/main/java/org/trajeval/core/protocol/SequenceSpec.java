@@ -2,6 +2,7 @@ package org.trajeval.core.protocol;
 
 import java.util.List;
 import java.util.Objects;
+import org.trajeval.core.options.SettingText;
 
 /**
  * One benchmark sequence of a suite manifest.
@@ -12,8 +13,11 @@ import java.util.Objects;
  * @param reference path of the reference trajectory, relative to the manifest's folder
  * @param split the split the sequence belongs to
  * @param tags environment tags (e.g. indoor, night), in manifest order
+ * @param settings evaluation settings of this sequence's runs on top of the suite's {@code metrics}
+ *     (e.g. {@code ref_times}, {@code ref_format}), in manifest order
  */
-public record SequenceSpec(String id, String session, String reference, Split split, List<String> tags) {
+public record SequenceSpec(String id, String session, String reference, Split split, List<String> tags,
+        List<SettingText> settings) {
     /** @throws NullPointerException on a missing component */
     public SequenceSpec {
         Objects.requireNonNull(id, "id");
@@ -21,5 +25,6 @@ public record SequenceSpec(String id, String session, String reference, Split sp
         Objects.requireNonNull(reference, "reference");
         Objects.requireNonNull(split, "split");
         tags = List.copyOf(tags);
+        settings = List.copyOf(settings);
     }
 }

@@ -2,7 +2,7 @@ package org.trajeval.core.protocol;
 
 import java.util.List;
 import java.util.Objects;
-import org.trajeval.core.eval.EvaluationOptions;
+import org.trajeval.core.options.SettingValues;
 
 /**
  * A benchmark described by one manifest: the protocol tuple Pi = (S, M, B, R) of the lesson's
@@ -14,13 +14,13 @@ import org.trajeval.core.eval.EvaluationOptions;
  * @param methods the methods, in manifest order
  * @param seeds the seed set Omega every method must be run with, ascending
  * @param evaluatedSplits the splits whose sequences are scored and compared
- * @param metrics how each run is evaluated
+ * @param metrics how each run is read and evaluated (the settings table; a sequence or method may add more)
  * @param failure what counts as a failed run
  * @param score the normalised score (Proposition 3)
  * @param budget the compute budget (recorded)
  */
 public record SuiteManifest(String name, List<SequenceSpec> sequences, List<MethodSpec> methods, List<Long> seeds,
-        List<Split> evaluatedSplits, EvaluationOptions metrics, FailureDefinition failure, NormalisedScore score,
+        List<Split> evaluatedSplits, SettingValues metrics, FailureDefinition failure, NormalisedScore score,
         Budget budget) {
 
     /** Name of the manifest format. */

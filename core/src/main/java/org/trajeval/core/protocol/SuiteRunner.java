@@ -25,6 +25,13 @@ import org.trajeval.core.InputProblem;
 import org.trajeval.core.Version;
 import org.trajeval.core.eval.EvaluationOptions;
 import org.trajeval.core.io.LoadedTrajectory;
+import org.trajeval.core.io.ReadOptions;
+import org.trajeval.core.options.DataKind;
+import org.trajeval.core.options.FileRole;
+import org.trajeval.core.options.PathResolver;
+import org.trajeval.core.options.SettingText;
+import org.trajeval.core.options.SettingValues;
+import org.trajeval.core.options.SettingsResolver;
 import org.trajeval.core.report.EvaluationReport;
 import org.trajeval.core.report.SequencePlot;
 import org.trajeval.core.report.SuiteReport;
@@ -140,7 +147,9 @@ public final class SuiteRunner {
                 throw new InputException(source, 0, "sequences[" + i + "].reference", InputProblem.UNREADABLE,
                         "'sequences[" + i + "].reference': reference file does not exist", s.reference());
             }
-            references.put(s.id(), renamed(engine.read(file), s.reference()));
+            SettingValues settingsOfSequence = m.metrics().with(s.settings(), source);
+            references.put(s.id(), renamed(engine.read(file, SettingsResolver.readOptions(settingsOfSequence,
+                    FileRole.REFERENCE, ReadOptions.defaults(), paths(base, source))), s.reference()));
             digests.put(s.reference(), sha256(file));
             roles.put(s.reference(), "reference");
         }
@@ -152,7 +161,8 @@ public final class SuiteRunner {
                 for (long seed : seeds.common()) {
                     String rel = ms.estimateFor(s.id(), seed);
                     Path file = inside(base, rel, source, "methods[" + m.methods().indexOf(ms) + "].estimates");
-                    tasks.add(() -> runOne(m, ms, s, seed, rel, file, references.get(s.id()), seed == plotSeed));
+                    tasks.add(() -> runOne(m, manifestFile, ms, s, seed, rel, file, references.get(s.id()),
+                            seed == plotSeed));
                 }
             }
         }
@@ -223,7 +233,9 @@ public final class SuiteRunner {
             warnings.add("SEEDS: " + d.describe() + "; statistics use only the common seeds " + seeds.common());
         }
         SuiteReport report = new SuiteReport(SuiteReport.SCHEMA, SuiteReport.SCHEMA_VERSION, Version.TOOL,
-                protocol(m, manifestFile, seeds, settings), new SuiteReport.Hygiene(leaks.stream().map(l ->
+                protocol(m, manifestFile, seeds, settings, references.values().stream().allMatch(r ->
+                        r.trajectory() instanceof org.trajeval.core.traj.PlanarTrajectory) ? DataKind.PLANAR
+                        : DataKind.SPATIAL), new SuiteReport.Hygiene(leaks.stream().map(l ->
                         new SuiteReport.Leak(l.unit().name().toLowerCase(Locale.ROOT), l.id(), leakMembers(l)))
                         .toList(), !leaks.isEmpty(), warnings),
                 inputs, summaries, comparisons, runs);
@@ -264,21 +276,43 @@ public final class SuiteRunner {
     private record Outcome(RunEntry entry, String sha256, SequencePlot.Trace trace) {
     }
 
-    private Outcome runOne(SuiteManifest m, MethodSpec ms, SequenceSpec s, long seed, String rel, Path file,
-            LoadedTrajectory reference, boolean plot) {
+    /**
+     * The settings of one run: the suite's {@code metrics}, then the sequence's settings, then the
+     * method's (placeholders in path settings filled in).
+     */
+    static SettingValues runSettings(SuiteManifest m, MethodSpec ms, SequenceSpec s, long seed, String source) {
+        List<SettingText> own = new ArrayList<>();
+        for (SettingText t : ms.settings()) {
+            own.add(new SettingText(t.key(), t.text() == null ? null : ms.fill(t.text(), s.id(), seed), t.where()));
+        }
+        return m.metrics().with(s.settings(), source).with(own, source);
+    }
+
+    /** Path settings of a manifest: relative to its folder, which they may not leave. */
+    private static PathResolver paths(Path base, String source) {
+        return (text, where) -> inside(base, text.replace('\\', '/'), source, where);
+    }
+
+    private Outcome runOne(SuiteManifest m, Path manifestFile, MethodSpec ms, SequenceSpec s, long seed, String rel,
+            Path file, LoadedTrajectory reference, boolean plot) {
         if (!Files.exists(file)) {
             return failed(m, ms, s, seed, rel, null, FailureDefinition.Reason.MISSING_ESTIMATE,
                     "estimate file does not exist", null);
         }
         String sha = sha256(file);
+        String source = manifestFile.toString();
+        SettingValues settings = runSettings(m, ms, s, seed, source);
         LoadedTrajectory est;
         try {
-            est = renamed(engine.read(file), rel);
+            est = renamed(engine.read(file, SettingsResolver.readOptions(settings, FileRole.ESTIMATE,
+                    ReadOptions.defaults(), paths(manifestFile.toAbsolutePath().normalize().getParent(), source))),
+                    rel);
         } catch (InputException | UncheckedIOException e) {
             return failed(m, ms, s, seed, rel, sha, FailureDefinition.Reason.UNREADABLE_ESTIMATE, e.getMessage(),
                     null);
         }
-        EvaluationOptions o = m.metrics();
+        EvaluationOptions o = SettingsResolver.evaluationOptions(settings,
+                DataKind.of(reference.trajectory(), est.trajectory()));
         double coverage = coverage(reference.trajectory(), est.trajectory(), o.tOffsetS());
         EvaluationReport rep;
         try {
@@ -397,9 +431,10 @@ public final class SuiteRunner {
         return new SequencePlot.Trace(method, seed, x, y, ts, e);
     }
 
+    /** The protocol as run; metric settings resolved for the references' data kind (an estimate may add its own). */
     private static SuiteReport.Protocol protocol(SuiteManifest m, Path manifestFile, SeedSetCheck seeds,
-            Settings settings) {
-        EvaluationOptions o = m.metrics();
+            Settings settings, DataKind kind) {
+        EvaluationOptions o = SettingsResolver.evaluationOptions(m.metrics(), kind);
         SuiteReport.MetricSettings ms = new SuiteReport.MetricSettings(lower(o.convention()), lower(o.association()),
                 o.maxDiffS(), lower(o.overlap()), lower(o.alignment()), o.rpeDelta(), o.rpeUnit().symbol(),
                 lower(o.pairSelection()), o.drift() == null ? null : o.drift().segmentLengthsM(),

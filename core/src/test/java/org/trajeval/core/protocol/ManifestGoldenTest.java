@@ -20,6 +20,9 @@ import org.trajeval.core.InputException;
 import org.trajeval.core.InputProblem;
 import org.trajeval.core.align.AlignmentModel;
 import org.trajeval.core.eval.Convention;
+import org.trajeval.core.eval.EvaluationOptions;
+import org.trajeval.core.options.DataKind;
+import org.trajeval.core.options.SettingsResolver;
 import org.trajeval.core.metric.RpeUnit;
 
 /** Manifests as golden file pairs: {@code name.yaml} + {@code name.expected.json}. */
@@ -66,10 +69,11 @@ class ManifestGoldenTest {
         assertEquals(List.of("outdoor", "night"), m.sequence("c1").tags());
         assertEquals("other/c1_2.tum", m.methods().get(1).estimateFor("c1", 2));
         assertEquals("runs/m1/a1/seed3.csv", m.methods().get(0).estimateFor("a1", 3));
-        assertEquals(Convention.LESSON, m.metrics().convention());
-        assertEquals(AlignmentModel.SE2, m.metrics().alignment());
-        assertEquals(2.0, m.metrics().rpeDelta(), 0.0);
-        assertEquals(RpeUnit.SECONDS, m.metrics().rpeUnit());
+        EvaluationOptions o = SettingsResolver.evaluationOptions(m.metrics(), DataKind.SPATIAL);
+        assertEquals(Convention.LESSON, o.convention());
+        assertEquals(AlignmentModel.SE2, o.alignment());
+        assertEquals(2.0, o.rpeDelta(), 0.0);
+        assertEquals(RpeUnit.SECONDS, o.rpeUnit());
         assertEquals(0.8, m.failure().minCoverage(), 0.0);
         assertEquals(0.75, m.score().terms().get(1).weight(), 0.0);
         assertEquals(new Budget("gpu", 8, 0.5, 8192), m.budget());
@@ -80,7 +84,7 @@ class ManifestGoldenTest {
         InputException e = assertThrows(InputException.class,
                 () -> new ManifestParser().read(DIR.resolve("bad/unknown_method_key.yaml")));
         assertEquals(DIR.resolve("bad/unknown_method_key.yaml") + ": 'methods[1].estimate_files': unknown key; "
-                + "expected one of estimates, name, seeds", e.getMessage());
+                + "expected one of estimates, name, seeds, settings", e.getMessage());
     }
 
     @Test

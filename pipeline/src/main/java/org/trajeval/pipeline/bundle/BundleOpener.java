@@ -7,7 +7,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import org.trajeval.core.InputException;
 import org.trajeval.core.InputProblem;
-import org.trajeval.pipeline.MetricSettings;
+import org.trajeval.core.options.SettingValues;
+import org.trajeval.pipeline.CoreRunScorer;
 import org.trajeval.pipeline.RunFailure;
 import org.trajeval.pipeline.RunJob;
 import org.trajeval.pipeline.RunMetadata;
@@ -108,7 +109,10 @@ public final class BundleOpener {
         try {
             Path ref = SafePaths.resolveFile(dir, manifest.reference(), manifestName, "reference", limits.maxFileBytes());
             Path est = SafePaths.resolveFile(dir, manifest.estimate(), manifestName, "estimate", limits.maxFileBytes());
-            return new RunJob(manifest.metadata(), ref, est, manifest.settings(), source);
+            RunJob job = new RunJob(manifest.metadata(), ref, est, manifest.settings(), source, dir);
+            CoreRunScorer.readOptions(job, org.trajeval.core.options.FileRole.REFERENCE, limits.maxFileBytes());
+            CoreRunScorer.readOptions(job, org.trajeval.core.options.FileRole.ESTIMATE, limits.maxFileBytes());
+            return job;
         } catch (InputException e) {
             throw new StageException(RunFailure.of(Stage.UNPACK, e), e);
         }
@@ -127,7 +131,7 @@ public final class BundleOpener {
                     "reference", name + PAIR_REFERENCE, limits.maxFileBytes());
             Path est = SafePaths.requireRegularFile(dir.resolve(name + PAIR_ESTIMATE), name + PAIR_ESTIMATE,
                     "estimate", name + PAIR_ESTIMATE, limits.maxFileBytes());
-            return new RunJob(metadata, ref, est, MetricSettings.DEFAULTS, name);
+            return new RunJob(metadata, ref, est, SettingValues.DEFAULTS, name);
         } catch (InputException e) {
             throw new StageException(RunFailure.of(Stage.UNPACK, e), e);
         }

@@ -3,12 +3,13 @@ package org.trajeval.pipeline.kafka;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
-import java.util.Iterator;
 import java.util.Set;
 import java.util.regex.Pattern;
 import org.trajeval.core.InputException;
 import org.trajeval.core.InputProblem;
-import org.trajeval.pipeline.MetricSettings;
+import org.trajeval.core.options.Setting;
+import org.trajeval.core.options.SettingValues;
+import org.trajeval.pipeline.bundle.RunFields;
 import org.trajeval.pipeline.RunMetadata;
 
 /**
@@ -26,9 +27,9 @@ import org.trajeval.pipeline.RunMetadata;
  * @param bundle bundle location relative to the bundle base, or {@code null}
  * @param reference inline reference, or {@code null}
  * @param estimate inline estimate, or {@code null}
- * @param settings metric settings of an inline event
+ * @param settings checked settings of an inline event (a bundle event takes its run.yaml's)
  */
-public record RunEvent(RunMetadata metadata, String bundle, Inline reference, Inline estimate, MetricSettings settings) {
+public record RunEvent(RunMetadata metadata, String bundle, Inline reference, Inline estimate, SettingValues settings) {
     private static final ObjectMapper JSON = new ObjectMapper();
     private static final Set<String> KEYS = Set.of("run_id", "robot_id", "sequence", "method", "seed", "bundle",
             "reference", "estimate", "metrics");
@@ -57,36 +58,25 @@ public record RunEvent(RunMetadata metadata, String bundle, Inline reference, In
                     "a run event must be a JSON object with run_id and bundle (or reference and estimate)",
                     json == null ? "null" : json.length() > 40 ? json.substring(0, 40) : json);
         }
-        for (Iterator<String> it = root.fieldNames(); it.hasNext(); ) {
-            String k = it.next();
-            if (!KEYS.contains(k)) {
-                throw new InputException(source, 0, k, InputProblem.INVALID_CONFIGURATION,
-                        "unknown key '" + k + "' in the run event", k);
-            }
-        }
-        RunMetadata metadata;
-        try {
-            metadata = new RunMetadata(text(root, "run_id"), text(root, "robot_id"), text(root, "sequence"),
-                    text(root, "method"), root.hasNonNull("seed") ? root.get("seed").asLong() : null);
-        } catch (InputException e) {
-            throw new InputException(source, 0, e.column(), e.problem(), e.detail(), e.found(), e);
-        }
-        String bundle = text(root, "bundle");
+        RunFields.requireKnown(root, KEYS, "", source);
+        RunMetadata metadata = RunFields.metadata(root, source);
+        String bundle = RunFields.text(root, "bundle", source, false);
         Inline ref = inline(root, "reference", source);
         Inline est = inline(root, "estimate", source);
         if ((bundle == null) == (ref == null || est == null)) {
             throw new InputException(source, 0, "bundle", InputProblem.INVALID_CONFIGURATION,
                     "a run event needs either bundle or both reference and estimate", null);
         }
-        MetricSettings settings = MetricSettings.DEFAULTS;
-        JsonNode m = root.get("metrics");
-        if (m != null && m.isObject()) {
-            try {
-                settings = new MetricSettings(text(m, "convention"), text(m, "alignment"), text(m, "association"),
-                        m.hasNonNull("max_diff_s") ? m.get("max_diff_s").asDouble() : null,
-                        m.hasNonNull("rpe_delta") ? m.get("rpe_delta").asDouble() : null, text(m, "rpe_unit"));
-            } catch (InputException e) {
-                throw new InputException(source, 0, e.column(), e.problem(), e.detail(), e.found(), e);
+        if (bundle != null && root.hasNonNull("metrics")) {
+            throw new InputException(source, 0, "metrics", InputProblem.INVALID_CONFIGURATION,
+                    "a bundle event takes its settings from the bundle's run.yaml; put metrics there", null);
+        }
+        SettingValues settings = RunFields.settings(root, source);
+        for (Setting s : new Setting[] {Setting.REF_TIMES, Setting.EST_TIMES}) {
+            if (settings.has(s)) {
+                throw new InputException(source, 0, settings.where(s), InputProblem.INVALID_CONFIGURATION,
+                        "'" + settings.where(s) + "' names a file, which an inline event cannot carry; send a bundle",
+                        String.valueOf(settings.get(s)));
             }
         }
         return new RunEvent(metadata, bundle, ref, est, settings);
@@ -107,10 +97,5 @@ public record RunEvent(RunMetadata metadata, String bundle, Inline reference, In
                     key + ".file_name must be a plain file name (A-Z a-z 0-9 . _ -)", name);
         }
         return new Inline(name, n.get("data").asText());
-    }
-
-    private static String text(JsonNode n, String key) {
-        JsonNode v = n.get(key);
-        return v == null || v.isNull() ? null : v.asText();
     }
 }

@@ -1,4 +1,4 @@
-package org.trajeval.core.report.html;
+package org.trajeval.figures;
 
 import java.awt.Color;
 import java.io.IOException;

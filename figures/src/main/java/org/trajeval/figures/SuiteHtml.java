@@ -1,4 +1,4 @@
-package org.trajeval.core.report.html;
+package org.trajeval.figures;
 
 import java.nio.file.Path;
 import java.util.ArrayList;

@@ -1,0 +1,104 @@
+package org.trajeval.pipeline.bundle;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.util.Iterator;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeSet;
+import org.trajeval.core.InputException;
+import org.trajeval.core.InputProblem;
+import org.trajeval.core.options.SettingValues;
+import org.trajeval.core.options.SettingsTree;
+import org.trajeval.pipeline.RunMetadata;
+
+/**
+ * The fields every run intake shares (a bundle's run.yaml and a Kafka run event), read the same
+ * strict way: unknown keys refused with the known ones listed, identity fields single values,
+ * the seed a whole number, {@code metrics} a mapping of the core settings table.
+ */
+public final class RunFields {
+    private static final ObjectMapper TREE = new ObjectMapper();
+
+    private RunFields() {
+    }
+
+    /** @throws InputException naming the first key not in {@code keys} */
+    public static void requireKnown(JsonNode node, Set<String> keys, String prefix, String source) {
+        for (Iterator<String> it = node.fieldNames(); it.hasNext(); ) {
+            String k = it.next();
+            if (!keys.contains(k)) {
+                throw new InputException(source, 0, prefix + k, InputProblem.INVALID_CONFIGURATION,
+                        "unknown key '" + prefix + k + "' (expected one of " + String.join(", ", new TreeSet<>(keys))
+                                + ")", k);
+            }
+        }
+    }
+
+    /** @return the text of a single-value field, or {@code null} when absent and not required */
+    public static String text(JsonNode node, String key, String source, boolean required) {
+        JsonNode v = node.get(key);
+        if (v == null || v.isNull()) {
+            if (required) {
+                throw new InputException(source, 0, key, InputProblem.INVALID_CONFIGURATION,
+                        "missing required key '" + key + "'", null);
+            }
+            return null;
+        }
+        if (!v.isValueNode()) {
+            throw new InputException(source, 0, key, InputProblem.INVALID_CONFIGURATION,
+                    key + " must be a single value", v.toString());
+        }
+        return v.asText();
+    }
+
+    /** @return the run identity: run_id (required), robot_id, sequence, method, seed (a whole number) */
+    public static RunMetadata metadata(JsonNode root, String source) {
+        try {
+            return new RunMetadata(text(root, "run_id", source, true), text(root, "robot_id", source, false),
+                    text(root, "sequence", source, false), text(root, "method", source, false), seed(root, source));
+        } catch (InputException e) {
+            throw new InputException(source, 0, e.column(), e.problem(), e.detail(), e.found(), e);
+        }
+    }
+
+    private static Long seed(JsonNode node, String source) {
+        JsonNode v = node.get("seed");
+        if (v == null || v.isNull()) {
+            return null;
+        }
+        if (!v.canConvertToLong() || !v.isIntegralNumber()) {
+            throw new InputException(source, 0, "seed", InputProblem.NOT_A_NUMBER, "seed must be a whole number",
+                    v.asText());
+        }
+        return v.asLong();
+    }
+
+    /**
+     * @return the checked settings of {@code metrics} (every key of the core settings table;
+     *     nested mappings as shorthand), or the defaults when absent
+     * @throws InputException when metrics is not a mapping, or on any unknown key or bad value
+     */
+    public static SettingValues settings(JsonNode root, String source) {
+        JsonNode m = root.get("metrics");
+        if (m == null || m.isNull()) {
+            return SettingValues.DEFAULTS;
+        }
+        if (!m.isObject()) {
+            throw new InputException(source, 0, "metrics", InputProblem.INVALID_CONFIGURATION,
+                    "metrics must be a mapping of settings", m.toString());
+        }
+        @SuppressWarnings("unchecked")
+        Map<String, Object> tree = TREE.convertValue(m, Map.class);
+        return SettingValues.of(SettingsTree.flatten(tree, "metrics", source), source);
+    }
+
+    /**
+     * @return a file a path setting names inside a bundle folder (no escape, no link, size limited)
+     * @throws InputException PATH_ESCAPES, UNREADABLE or TOO_LARGE naming the setting
+     */
+    public static java.nio.file.Path fileInBundle(java.nio.file.Path folder, String text, String source, String where,
+            long maxBytes) {
+        return SafePaths.resolveFile(folder, text, source, where, maxBytes);
+    }
+}
