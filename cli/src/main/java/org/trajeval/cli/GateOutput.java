@@ -36,8 +36,9 @@ final class GateOutput {
     static String markdown(List<Finding> fs, double confidence, String baseline, String candidate) {
         StringBuilder b = new StringBuilder();
         b.append("### trajeval gate: ").append(headline(fs)).append("\n\n");
-        b.append("Baseline `").append(baseline).append("`, candidate `").append(candidate).append("`; one-sided ")
-                .append(pct(confidence)).append(" bound of the mean paired difference against tolerance x baseline.\n\n");
+        b.append("Baseline `").append(baseline).append("`, candidate `").append(candidate).append("`; one-sided bound of the mean paired difference (")
+                .append(pct(confidence)).append(" shared by the ").append(fs.size())
+                .append(" rows, Bonferroni) against tolerance x baseline.\n\n");
         b.append("| method | metric | n | baseline | candidate | change | tolerance | verdict |\n");
         b.append("|---|---|---:|---:|---:|---:|---:|---|\n");
         for (Finding f : fs) {
