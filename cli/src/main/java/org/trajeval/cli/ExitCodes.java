@@ -10,6 +10,8 @@ public final class ExitCodes {
     public static final int BAD_INPUT = 2;
     /** {@code splits check}: leakage found. */
     public static final int LEAKAGE = 3;
+    /** {@code gate}: a metric of the candidate regressed beyond its tolerance. */
+    public static final int REGRESSION = 5;
 
     private ExitCodes() {
     }

@@ -2,11 +2,14 @@ package org.trajeval.cli;
 
 import java.io.PrintWriter;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.trajeval.core.protocol.SplitLeakageException;
 import org.trajeval.core.protocol.SuiteRunner;
 import org.trajeval.core.report.SuiteReport;
+import org.trajeval.store.Labels;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -43,6 +46,13 @@ public final class SuiteCommand implements Callable<Integer> {
     @Option(names = "--allow-leakage", description = "Run despite split leakage; the report flags it.")
     boolean allowLeakage;
 
+    @picocli.CommandLine.Mixin
+    StoreOptions store = new StoreOptions();
+
+    @Option(names = "--tag", paramLabel = "KEY=VALUE", description = {"With --db: label every run (repeatable), "
+        + "e.g. software_version=2.4; software_version, robot, site fill their columns, other keys are free tags."})
+    List<String> tags = new ArrayList<>();
+
     @Option(names = "--verbose", description = "Print stack traces of errors.")
     boolean verbose;
 
@@ -51,6 +61,10 @@ public final class SuiteCommand implements Callable<Integer> {
         PrintWriter o = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         long start = System.nanoTime();
+        Labels labels = Labels.parse(tags);
+        if (!tags.isEmpty() && !store.given()) {
+            throw new IllegalArgumentException("--tag labels stored runs: it needs --db");
+        }
         SuiteReport r;
         try {
             stats.check();
@@ -62,6 +76,9 @@ public final class SuiteCommand implements Callable<Integer> {
             return ExitCodes.LEAKAGE;
         }
         SuiteOutput.printSummary(r, o);
+        if (store.given()) {
+            SuiteOutput.record(r, out, labels, store, o);
+        }
         o.printf(Locale.ROOT, "%nwrote %s (report.json, runs.csv, methods.csv, comparisons.csv, report.html) in %.1f s%n",
                 out, (System.nanoTime() - start) / 1e9);
         o.flush();

@@ -2,6 +2,7 @@ package org.trajeval.cli;
 
 import java.io.PrintWriter;
 import java.nio.file.Path;
+import java.time.Instant;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.ExecutorService;
@@ -13,6 +14,9 @@ import org.trajeval.core.report.SuiteReport;
 import org.trajeval.core.report.SuiteReportFiles;
 import org.trajeval.figures.RankDiagramSvg;
 import org.trajeval.figures.SuiteHtml;
+import org.trajeval.store.Labels;
+import org.trajeval.store.ReportRecords;
+import org.trajeval.store.ResultsStore;
 
 /** Runs a suite and writes its report folder; shared by {@code suite} and {@code demo}. */
 final class SuiteOutput {
@@ -99,6 +103,17 @@ final class SuiteOutput {
                     num(k.friedman().pValue()), k.imanDavenport().statistic() == null ? "inf"
                             : num(k.imanDavenport().statistic()), num(k.imanDavenport().pValue()), ranks,
                     k.groups().isEmpty() ? "none (every pair differs)" : k.groups().toString());
+        }
+    }
+
+    /** Records a suite's runs in the results store, after its report files (the source of truth). */
+    static void record(SuiteReport r, Path reportDir, Labels labels, StoreOptions store,
+            PrintWriter o) {
+        try (ResultsStore s = store.open()) {
+            int n = s.record(ReportRecords.fromSuite(r,
+                    reportDir.resolve(SuiteReportFiles.JSON).toString(),
+                    Instant.now(), labels));
+            o.printf(Locale.ROOT, "recorded %d new run(s) of %d in %s%n", n, r.runs().size(), s.location());
         }
     }
 

@@ -11,11 +11,12 @@ import picocli.CommandLine.Command;
 @Command(name = "trajeval", mixinStandardHelpOptions = true, versionProvider = TrajevalCommand.VersionProvider.class,
         description = "Scores robot trajectories against ground truth (ATE, RPE, drift) and runs benchmark suites.",
         subcommands = {EvalCommand.class, ResCommand.class, SuiteCommand.class, CompareCommand.class, SplitsCommand.class,
-            DemoCommand.class, TopicsCommand.class, ConvertCommand.class},
+            DemoCommand.class, TopicsCommand.class, ConvertCommand.class, DbCommand.class, GateCommand.class,
+            TrendCommand.class},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success", "1:internal error (a bug; rerun with --verbose and report it)",
             "2:bad input or usage (the message names file, line and what was expected)",
-            "3:leakage found (splits check)"})
+            "3:leakage found (splits check)", "5:regression found (gate)"})
 public final class TrajevalCommand implements Runnable {
 
     @CommandLine.Spec
@@ -57,7 +58,8 @@ public final class TrajevalCommand implements Runnable {
             boolean verbose = isVerbose(parsed);
             // bad input is an InputException (the file, line or option it names) or a file that cannot be
             // read or written; anything else, IllegalArgumentException included, is a bug of ours
-            if (ex instanceof InputException || ex instanceof java.io.UncheckedIOException) {
+            if (ex instanceof InputException || ex instanceof java.io.UncheckedIOException
+                    || ex instanceof org.trajeval.store.StoreException) {
                 err.println("trajeval: " + InputText.escape(ex.getMessage()));
                 if (verbose) {
                     ex.printStackTrace(err);

@@ -21,6 +21,7 @@ import org.trajeval.pipeline.kafka.KafkaMode;
 import org.trajeval.pipeline.ledger.Ledger;
 import org.trajeval.pipeline.metrics.HttpEndpoint;
 import org.trajeval.pipeline.metrics.PipelineMetrics;
+import org.trajeval.pipeline.store.ResultsRecorder;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -80,7 +81,7 @@ public final class PipelineCommand implements Runnable {
                 return f.kind().exitCode();
             }
             if (ex instanceof InputException || ex instanceof IllegalArgumentException
-                    || ex instanceof java.io.UncheckedIOException) {
+                    || ex instanceof java.io.UncheckedIOException || ex instanceof org.trajeval.store.StoreException) {
                 err.println("trajeval-pipeline: " + ex.getMessage());
                 err.flush();
                 return 2;
@@ -165,8 +166,9 @@ public final class PipelineCommand implements Runnable {
             DirectoryLayout layout = new DirectoryLayout(c.rootPath()).create();
             PipelineMetrics metrics = PipelineMetrics.prometheus();
             try (Ledger ledger = Ledger.open(layout.ledger())) {
-                RunProcessor processor = new RunProcessor(parent.scorers.apply(c),
-                        new ReportStore(layout.reports(), ledger, Clock.systemUTC()));
+                ResultsRecorder.Attached store = ResultsRecorder.attach(c,
+                        new ReportStore(layout.reports(), ledger, Clock.systemUTC()), metrics.storeLag(), parent.env);
+                RunProcessor processor = new RunProcessor(parent.scorers.apply(c), store.reports());
                 DirectoryService service = new DirectoryService(layout, c.directoryOptions(), processor,
                         new BundleOpener(c.bundleLimits()), metrics, Clock.systemUTC());
                 HttpEndpoint http = c.http().enabled() && !drain
@@ -187,6 +189,9 @@ public final class PipelineCommand implements Runnable {
                 } finally {
                     if (http != null) {
                         http.close();
+                    }
+                    if (store.recorder() != null) {
+                        store.recorder().close();
                     }
                     finished.countDown();
                 }

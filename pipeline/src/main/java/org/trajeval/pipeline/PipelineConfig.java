@@ -23,9 +23,19 @@ import org.trajeval.pipeline.dir.DirectoryOptions;
  * @param limits bundle size limits
  * @param http metrics and health endpoint
  * @param kafka Kafka mode settings
+ * @param store the results store every committed report is also recorded in
  */
 public record PipelineConfig(String root, int workers, int queueCapacity, String completion, double quietTimeS,
-        double scanIntervalS, String logFormat, Limits limits, Http http, Kafka kafka) {
+        double scanIntervalS, String logFormat, Limits limits, Http http, Kafka kafka, Store store) {
+
+    /**
+     * @param db SQLite file or JDBC URL ({@code jdbc:sqlite:}, {@code jdbc:postgresql:}); empty:
+     *     ROOT/trajeval.db; {@code none}: no store. Credentials from TRAJEVAL_DB_USER and
+     *     TRAJEVAL_DB_PASSWORD or TRAJEVAL_DB_PASSWORD_FILE, never here
+     * @param retryIntervalS pause between attempts to replay the backlog while the store is down (s)
+     */
+    public record Store(String db, double retryIntervalS) {
+    }
 
     /**
      * @param maxFileBytes largest trajectory or manifest file (bytes)
@@ -95,7 +105,8 @@ public record PipelineConfig(String root, int workers, int queueCapacity, String
                 new Http(true, "127.0.0.1", 9464),
                 new Kafka("127.0.0.1:9092", "trajeval-pipeline", "trajeval.runs", "trajeval.reports",
                         "trajeval.runs.dlq", 3, "", 10_000, 300_000, "", 60, 0, "",
-                        new Security("", "", "", "", "", "", "", "")));
+                        new Security("", "", "", "", "", "", "", "")),
+                new Store("", 10));
     }
 
     /** @return the root folder */

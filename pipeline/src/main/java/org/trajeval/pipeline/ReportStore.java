@@ -26,6 +26,17 @@ public final class ReportStore {
     private final Ledger ledger;
     private final Clock clock;
     private final BiConsumer<Path, String> writer;
+    private final CommitListener listener;
+
+    /** Told of every report this store commits, after its file and ledger line are durable. */
+    public interface CommitListener {
+        /**
+         * @param runId the run id
+         * @param version the report's version
+         * @param reportFile the report file
+         */
+        void committed(String runId, int version, Path reportFile);
+    }
 
     /**
      * @param reportsDir folder of the report files
@@ -41,10 +52,26 @@ public final class ReportStore {
      * it throws {@link java.io.UncheckedIOException} when the file cannot be written).
      */
     public ReportStore(Path reportsDir, Ledger ledger, Clock clock, BiConsumer<Path, String> writer) {
+        this(reportsDir, ledger, clock, writer, (id, v, f) -> { });
+    }
+
+    private ReportStore(Path reportsDir, Ledger ledger, Clock clock, BiConsumer<Path, String> writer,
+            CommitListener listener) {
         this.reportsDir = reportsDir;
         this.ledger = ledger;
         this.clock = clock;
         this.writer = writer;
+        this.listener = listener;
+    }
+
+    /** @return this store, also telling {@code l} of every committed report (e.g. the results store recorder) */
+    public ReportStore withListener(CommitListener l) {
+        return new ReportStore(reportsDir, ledger, clock, writer, l);
+    }
+
+    /** @return the ledger */
+    public Ledger ledger() {
+        return ledger;
     }
 
     /** @return the report file of a run version */
@@ -68,6 +95,14 @@ public final class ReportStore {
      * @return REPORTED with the new version and file, or DUPLICATE with the earlier ones
      */
     public RunResult commit(RunJob job, ContentHash hash, EvaluationReport evaluation) {
+        RunResult r = commitLocked(job, hash, evaluation);
+        if (r.outcome() == Outcome.REPORTED) {
+            listener.committed(r.runId(), r.version(), r.report());
+        }
+        return r;
+    }
+
+    private RunResult commitLocked(RunJob job, ContentHash hash, EvaluationReport evaluation) {
         RunMetadata m = job.metadata();
         return ledger.locked(view -> {
             Optional<LedgerEntry> earlier = view.find(m.runId(), hash.content());

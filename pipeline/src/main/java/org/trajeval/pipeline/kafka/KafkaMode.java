@@ -67,7 +67,10 @@ public final class KafkaMode {
             LOG.info("Kafka mode: broker {}, group {}, transactional id {}, transaction timeout {} s",
                     clients.bootstrapServers(), s.groupId(), s.transactionalId(), s.transactionTimeoutMs() / 1000);
             PipelineMetrics metrics = PipelineMetrics.prometheus();
-            ReportStore store = new ReportStore(layout.reports(), ledger, Clock.systemUTC());
+            // the results store recorder (a daemon; an unrecorded report is replayed from the ledger at the next start)
+            ReportStore store = org.trajeval.pipeline.store.ResultsRecorder.attach(c,
+                    new ReportStore(layout.reports(), ledger, Clock.systemUTC()), metrics.storeLag(), System.getenv())
+                    .reports();
             RunProcessor processor = new RunProcessor(scorer, store);
             TopicKeeper keeper = new TopicKeeper(s, clients.bootstrapServers(), layout.root().resolve("kafka-state"));
             try (BrokerWatch watch = new BrokerWatch(clients, keeper, metrics, Clock.systemUTC(), s.unhealthyAfter(),

@@ -24,7 +24,8 @@ import org.trajeval.pipeline.Outcome;
  * transaction [{@code trajeval_pipeline_last_commit_age_seconds}, NaN before the first], runs
  * scored and waiting for their commit [{@code trajeval_pipeline_runs_held}], producers re-created
  * after a broker fault [{@code trajeval_pipeline_producer_rebuilds_total}], report events
- * re-published from the ledger [{@code trajeval_pipeline_republished_total}].
+ * re-published from the ledger [{@code trajeval_pipeline_republished_total}]; committed reports not
+ * yet in the results store [{@code trajeval_pipeline_store_lag}].
  */
 public final class PipelineMetrics {
     private final MeterRegistry registry;
@@ -39,6 +40,7 @@ public final class PipelineMetrics {
     private final AtomicLong runsHeld = new AtomicLong();
     private final Counter producerRebuilds;
     private final Counter republished;
+    private final AtomicLong storeLag = new AtomicLong();
 
     private PipelineMetrics(MeterRegistry registry, PrometheusMeterRegistry prometheus) {
         this.registry = registry;
@@ -67,6 +69,8 @@ public final class PipelineMetrics {
                 .description("transactional producers re-created after a broker fault").register(registry);
         republished = Counter.builder("trajeval.pipeline.republished")
                 .description("report events re-published from the ledger").register(registry);
+        Gauge.builder("trajeval.pipeline.store.lag", storeLag, AtomicLong::get)
+                .description("committed reports not yet recorded in the results store").register(registry);
     }
 
     /** @return metrics exposed in the Prometheus text format */
@@ -129,6 +133,11 @@ public final class PipelineMetrics {
     /** @return the counter of re-published report events */
     public Counter republished() {
         return republished;
+    }
+
+    /** @return the gauge of committed reports not yet in the results store */
+    public AtomicLong storeLag() {
+        return storeLag;
     }
 
     /** @return the Prometheus text exposition, or an empty string when not Prometheus-backed */

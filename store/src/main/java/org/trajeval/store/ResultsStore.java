@@ -1,0 +1,424 @@
+package org.trajeval.store;
+
+import java.sql.Connection;
+import java.sql.DriverManager;
+import java.sql.PreparedStatement;
+import java.sql.ResultSet;
+import java.sql.SQLException;
+import java.sql.Types;
+import java.time.Clock;
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Properties;
+import java.util.Set;
+
+/**
+ * The results store: run results in one SQL schema on SQLite or PostgreSQL, through plain JDBC
+ * with prepared statements. Opening migrates the schema ({@link Migrations}). Recording is
+ * idempotent: rows are keyed by {@link RunRecord#resultSha256()} and inserted with
+ * {@code ON CONFLICT DO NOTHING} (both databases accept it), so any number of writers may record
+ * the same results at once and each stays exactly once.
+ *
+ * <p>SQLite runs in WAL mode (readers never block the writer, several processes on one host may
+ * write; writes wait up to 30 s for the lock) with {@code synchronous=NORMAL}: a power cut may
+ * lose the last transactions, never corrupt the file, and the report files rebuild them.
+ * One connection per store; methods are synchronized, so one store may serve several threads.
+ */
+public final class ResultsStore implements AutoCloseable {
+    static final String LABELS = "result_sha256, origin, run_id, run_version, content_sha256, dataset, robot, site, "
+            + "route, method, software_version, seed, recorded_at, recorded_ms, status, failure_reason, source";
+    private static final int LABEL_COUNT = 17;
+
+    private final StoreLocation location;
+    private final Connection connection;
+
+    private ResultsStore(StoreLocation location, Connection connection) {
+        this.location = location;
+        this.connection = connection;
+    }
+
+    /**
+     * Connects and brings the schema up to date.
+     *
+     * @throws StoreException UNAVAILABLE when the database cannot be reached or refuses the login,
+     *     SCHEMA when its schema is newer or was tampered with
+     */
+    public static ResultsStore open(StoreLocation location, Clock clock) {
+        Properties p = location.connectionProperties();
+        if (location.dialect() == Dialect.SQLITE) {
+            p.setProperty("journal_mode", "WAL");
+            p.setProperty("synchronous", "NORMAL");
+            p.setProperty("busy_timeout", "30000");
+            p.setProperty("transaction_mode", "IMMEDIATE");
+            p.setProperty("foreign_keys", "true");
+        } else {
+            p.setProperty("connectTimeout", "10");
+            p.setProperty("ApplicationName", "trajeval");
+        }
+        Connection c;
+        try {
+            c = DriverManager.getConnection(location.jdbcUrl(), p);
+        } catch (SQLException e) {
+            throw new StoreException(StoreException.Problem.UNAVAILABLE, location.display()
+                    + ": cannot connect (" + oneLine(e) + ")", e);
+        }
+        try {
+            Migrations.migrate(c, location.dialect(), clock, location.display());
+            return new ResultsStore(location, c);
+        } catch (SQLException e) {
+            closeQuietly(c);
+            throw new StoreException(StoreException.Problem.UNAVAILABLE, location.display()
+                    + ": cannot create or upgrade the schema (" + oneLine(e) + ")", e);
+        } catch (RuntimeException e) {
+            closeQuietly(c);
+            throw e;
+        }
+    }
+
+    /** @return where this store lives */
+    public StoreLocation location() {
+        return location;
+    }
+
+    /** @return the schema version in use */
+    public static int schemaVersion() {
+        return Migrations.latest();
+    }
+
+    /**
+     * Records results in one transaction; results already present (same key) are left as they are.
+     *
+     * @return how many results were new
+     */
+    public synchronized int record(Collection<RunRecord> records) {
+        if (records.isEmpty()) {
+            return 0;
+        }
+        // one lock order for every writer (rows by key, then their tags): concurrent writers of
+        // overlapping batches then wait for each other instead of deadlocking (PostgreSQL detects a
+        // deadlock and aborts one; a retry would do, but the order avoids it)
+        List<RunRecord> list = new ArrayList<>(records);
+        list.sort(java.util.Comparator.comparing(RunRecord::resultSha256));
+        for (int attempt = 1;; attempt++) {
+            try {
+                return insert(list);
+            } catch (SQLException e) {
+                rollbackQuietly();
+                String state = e.getSQLState();
+                boolean transientConflict = "40001".equals(state) || "40P01".equals(state);
+                if (!transientConflict || attempt >= 3) {
+                    throw failure("cannot record results", e);
+                }
+            } finally {
+                autoCommit();
+            }
+        }
+    }
+
+    private int insert(List<RunRecord> list) throws SQLException {
+        StringBuilder sql = new StringBuilder("INSERT INTO runs (").append(LABELS);
+        for (String m : StoredMetric.keys()) {
+            sql.append(", ").append(m);
+        }
+        sql.append(") VALUES (?");
+        sql.append(", ?".repeat(LABEL_COUNT - 1 + StoredMetric.keys().size()));
+        sql.append(") ON CONFLICT (result_sha256) DO NOTHING");
+        connection.setAutoCommit(false);
+        int inserted = 0;
+        {
+            try (PreparedStatement runs = connection.prepareStatement(sql.toString());
+                    PreparedStatement tags = connection.prepareStatement("INSERT INTO run_tags (result_sha256, tag, "
+                            + "value) VALUES (?, ?, ?) ON CONFLICT (result_sha256, tag) DO NOTHING")) {
+                for (RunRecord r : list) {
+                    bind(runs, r);
+                    runs.addBatch();
+                }
+                int[] counts = runs.executeBatch();
+                boolean anyTags = false;
+                for (int i = 0; i < list.size(); i++) {
+                    if (counts[i] > 0 || counts[i] == java.sql.Statement.SUCCESS_NO_INFO) {
+                        inserted += counts[i] > 0 ? counts[i] : 0;
+                    }
+                    for (Map.Entry<String, String> t : list.get(i).tags().entrySet()) {
+                        tags.setString(1, list.get(i).resultSha256());
+                        tags.setString(2, t.getKey());
+                        tags.setString(3, t.getValue());
+                        tags.addBatch();
+                        anyTags = true;
+                    }
+                }
+                if (anyTags) {
+                    tags.executeBatch();
+                }
+            }
+        }
+        connection.commit();
+        return inserted;
+    }
+
+    private static void bind(PreparedStatement s, RunRecord r) throws SQLException {
+        int i = 1;
+        s.setString(i++, r.resultSha256());
+        s.setString(i++, r.origin());
+        s.setString(i++, r.runId());
+        setInt(s, i++, r.runVersion());
+        s.setString(i++, r.contentSha256());
+        s.setString(i++, r.dataset());
+        s.setString(i++, r.robot());
+        s.setString(i++, r.site());
+        s.setString(i++, r.route());
+        s.setString(i++, r.method());
+        s.setString(i++, r.softwareVersion());
+        setLong(s, i++, r.seed());
+        s.setString(i++, r.recordedAt().toString());
+        s.setLong(i++, r.recordedAt().toEpochMilli());
+        s.setString(i++, r.ok() ? "ok" : "failed");
+        s.setString(i++, r.failureReason());
+        s.setString(i++, r.source());
+        for (String m : StoredMetric.keys()) {
+            Double v = r.metrics().get(m);
+            if (v == null || !Double.isFinite(v)) {
+                s.setNull(i++, Types.DOUBLE);
+            } else {
+                s.setDouble(i++, v);
+            }
+        }
+    }
+
+    /** @return which of these keys are stored */
+    public synchronized Set<String> present(Collection<String> keys) {
+        Set<String> out = new HashSet<>();
+        List<String> list = new ArrayList<>(keys);
+        final int chunk = 500;
+        try {
+            for (int from = 0; from < list.size(); from += chunk) {
+                List<String> part = list.subList(from, Math.min(list.size(), from + chunk));
+                String in = "?" + ", ?".repeat(part.size() - 1);
+                try (PreparedStatement s = connection.prepareStatement(
+                        "SELECT result_sha256 FROM runs WHERE result_sha256 IN (" + in + ")")) {
+                    for (int i = 0; i < part.size(); i++) {
+                        s.setString(i + 1, part.get(i));
+                    }
+                    try (ResultSet rs = s.executeQuery()) {
+                        while (rs.next()) {
+                            out.add(rs.getString(1));
+                        }
+                    }
+                }
+            }
+            return out;
+        } catch (SQLException e) {
+            throw failure("cannot look results up", e);
+        }
+    }
+
+    /** @return the number of stored results */
+    public synchronized long count() {
+        try (PreparedStatement s = connection.prepareStatement("SELECT COUNT(*) FROM runs");
+                ResultSet rs = s.executeQuery()) {
+            rs.next();
+            return rs.getLong(1);
+        } catch (SQLException e) {
+            throw failure("cannot count results", e);
+        }
+    }
+
+    /** @return every stored result the selection takes (tags included), ordered by method, route, seed, key */
+    public List<RunRecord> select(Selection selection) {
+        return select(selection, true);
+    }
+
+    /**
+     * @param withTags whether to read the tags too (the gate needs none: one query instead of one per 500 rows)
+     * @return every stored result the selection takes, ordered by method, route, seed, key
+     */
+    public synchronized List<RunRecord> select(Selection selection, boolean withTags) {
+        StringBuilder sql = new StringBuilder("SELECT ").append(LABELS.replace("result_sha256", "r.result_sha256"));
+        for (String m : StoredMetric.keys()) {
+            sql.append(", ").append(m);
+        }
+        sql.append(" FROM runs r WHERE 1 = 1");
+        List<Object> args = new ArrayList<>();
+        selection.appendWhere(sql, args);
+        sql.append(" ORDER BY method, route, seed, r.result_sha256");
+        try (PreparedStatement s = connection.prepareStatement(sql.toString())) {
+            bindAll(s, args);
+            List<RunRecord> rows = new ArrayList<>();
+            try (ResultSet rs = s.executeQuery()) {
+                while (rs.next()) {
+                    rows.add(read(rs));
+                }
+            }
+            return withTags ? withTags(rows) : rows;
+        } catch (SQLException e) {
+            throw failure("cannot select results " + selection, e);
+        }
+    }
+
+    private List<RunRecord> withTags(List<RunRecord> rows) throws SQLException {
+        if (rows.isEmpty()) {
+            return rows;
+        }
+        Map<String, Map<String, String>> tags = new HashMap<>();
+        List<String> keys = rows.stream().map(RunRecord::resultSha256).toList();
+        final int chunk = 500;
+        for (int from = 0; from < keys.size(); from += chunk) {
+            List<String> part = keys.subList(from, Math.min(keys.size(), from + chunk));
+            try (PreparedStatement s = connection.prepareStatement("SELECT result_sha256, tag, value FROM run_tags "
+                    + "WHERE result_sha256 IN (?" + ", ?".repeat(part.size() - 1) + ")")) {
+                for (int i = 0; i < part.size(); i++) {
+                    s.setString(i + 1, part.get(i));
+                }
+                try (ResultSet rs = s.executeQuery()) {
+                    while (rs.next()) {
+                        tags.computeIfAbsent(rs.getString(1), k -> new HashMap<>()).put(rs.getString(2),
+                                rs.getString(3));
+                    }
+                }
+            }
+        }
+        if (tags.isEmpty()) {
+            return rows;
+        }
+        List<RunRecord> out = new ArrayList<>(rows.size());
+        for (RunRecord r : rows) {
+            Map<String, String> t = tags.get(r.resultSha256());
+            out.add(t == null ? r : new RunRecord(r.resultSha256(), r.origin(), r.runId(), r.runVersion(),
+                    r.contentSha256(), r.dataset(), r.robot(), r.site(), r.route(), r.method(), r.softwareVersion(),
+                    r.seed(), r.recordedAt(), r.ok(), r.failureReason(), r.metrics(), r.source(), t));
+        }
+        return out;
+    }
+
+    private static RunRecord read(ResultSet rs) throws SQLException {
+        Map<String, Double> metrics = new HashMap<>();
+        int col = LABEL_COUNT + 1;
+        for (String m : StoredMetric.keys()) {
+            double v = rs.getDouble(col++);
+            if (!rs.wasNull()) {
+                metrics.put(m, v);
+            }
+        }
+        int version = rs.getInt(4);
+        Integer runVersion = rs.wasNull() ? null : version;
+        long seed = rs.getLong(12);
+        Long seedValue = rs.wasNull() ? null : seed;
+        return new RunRecord(rs.getString(1), rs.getString(2), rs.getString(3), runVersion, rs.getString(5),
+                rs.getString(6), rs.getString(7), rs.getString(8), rs.getString(9), rs.getString(10),
+                rs.getString(11), seedValue, Instant.ofEpochMilli(rs.getLong(14)), "ok".equals(rs.getString(15)),
+                rs.getString(16), metrics, rs.getString(17), Map.of());
+    }
+
+    /**
+     * Aggregates a metric per slice and bucket over successful runs: count, sum and sum of squares,
+     * so only the cells leave the database.
+     *
+     * @param metric a metric column
+     * @param slice a label column ({@link Selection#COLUMNS}) to slice by
+     * @param bucket how runs are grouped along the slice's history
+     * @param selection which runs take part
+     * @param sinceMs only runs recorded at or after this time (ms since the epoch)
+     */
+    public synchronized List<TrendCell> trendCells(String metric, String slice, TrendBucket bucket,
+            Selection selection, long sinceMs) {
+        StoredMetric.require(metric);
+        if (!Selection.COLUMNS.contains(slice)) {
+            throw new StoreException(StoreException.Problem.BAD_QUERY, "--by: expected one of robot, site, route, "
+                    + "method, version, found \"" + slice + "\"", null);
+        }
+        String b = bucket.expression();
+        StringBuilder sql = new StringBuilder("SELECT r.").append(slice).append(", ").append(b)
+                .append(" AS bucket, COUNT(*), SUM(").append(metric).append("), SUM(").append(metric).append(" * ")
+                .append(metric).append("), MIN(r.recorded_ms), MAX(r.recorded_ms) FROM runs r WHERE r.")
+                .append(metric).append(" IS NOT NULL AND r.status = 'ok' AND r.recorded_ms >= ?");
+        List<Object> args = new ArrayList<>();
+        args.add(sinceMs);
+        selection.appendWhere(sql, args);
+        sql.append(" GROUP BY r.").append(slice).append(", ").append(b);
+        try (PreparedStatement s = connection.prepareStatement(sql.toString())) {
+            bindAll(s, args);
+            List<TrendCell> cells = new ArrayList<>();
+            try (ResultSet rs = s.executeQuery()) {
+                while (rs.next()) {
+                    cells.add(new TrendCell(rs.getString(1), rs.getString(2), rs.getLong(3), rs.getDouble(4),
+                            rs.getDouble(5), rs.getLong(6), rs.getLong(7)));
+                }
+            }
+            return cells;
+        } catch (SQLException e) {
+            throw failure("cannot aggregate " + metric + " by " + slice, e);
+        }
+    }
+
+    private static void bindAll(PreparedStatement s, List<Object> args) throws SQLException {
+        for (int i = 0; i < args.size(); i++) {
+            Object a = args.get(i);
+            if (a instanceof Long l) {
+                s.setLong(i + 1, l);
+            } else {
+                s.setString(i + 1, (String) a);
+            }
+        }
+    }
+
+    private static void setInt(PreparedStatement s, int i, Integer v) throws SQLException {
+        if (v == null) {
+            s.setNull(i, Types.INTEGER);
+        } else {
+            s.setInt(i, v);
+        }
+    }
+
+    private static void setLong(PreparedStatement s, int i, Long v) throws SQLException {
+        if (v == null) {
+            s.setNull(i, Types.BIGINT);
+        } else {
+            s.setLong(i, v);
+        }
+    }
+
+    private StoreException failure(String what, SQLException e) {
+        return new StoreException(StoreException.Problem.UNAVAILABLE, location.display() + ": " + what + " ("
+                + oneLine(e) + ")", e);
+    }
+
+    /** @return the exception's message on one line, without the URL's query */
+    static String oneLine(SQLException e) {
+        String m = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+        return m.replaceAll("[\\r\\n]+", " ").strip();
+    }
+
+    private void rollbackQuietly() {
+        try {
+            connection.rollback();
+        } catch (SQLException ignored) {
+            // the connection is gone; the transaction died with it
+        }
+    }
+
+    private void autoCommit() {
+        try {
+            connection.setAutoCommit(true);
+        } catch (SQLException ignored) {
+            // a broken connection: the next call reports it
+        }
+    }
+
+    private static void closeQuietly(Connection c) {
+        try {
+            c.close();
+        } catch (SQLException ignored) {
+            // closing after a failure: nothing more to report
+        }
+    }
+
+    @Override
+    public synchronized void close() {
+        closeQuietly(connection);
+    }
+}

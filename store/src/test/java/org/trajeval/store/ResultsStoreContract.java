@@ -1,0 +1,129 @@
+package org.trajeval.store;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.time.Clock;
+import java.time.Instant;
+import java.time.ZoneOffset;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.Map;
+import java.util.Random;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import org.junit.jupiter.api.Test;
+
+/** What every store dialect must do; run against SQLite and a real PostgreSQL. */
+abstract class ResultsStoreContract {
+    static final Clock CLOCK = Clock.fixed(Instant.parse("2026-11-23T08:00:00Z"), ZoneOffset.UTC);
+    static final double VALUE_TOL = 1e-12;
+    static final long DAY_MS = 86_400_000L;
+
+    /** @return a fresh, empty store location */
+    abstract StoreLocation freshLocation() throws Exception;
+
+    @Test
+    void recordingTheSameResultTwiceKeepsOneRow() throws Exception {
+        try (ResultsStore s = ResultsStore.open(freshLocation(), CLOCK)) {
+            RunRecord r = Records.run(1, "bot-1", "hall", "2.3", 1, 0.10, 0, Map.of("shift", "night"));
+            assertEquals(1, s.record(List.of(r)));
+            assertEquals(0, s.record(List.of(r)));
+            assertEquals(1, s.count());
+            RunRecord back = s.select(Selection.all()).get(0);
+            assertEquals(r, back, "every column and tag reads back as written");
+        }
+    }
+
+    @Test
+    void selectionMatchesColumnsAndFreeTags() throws Exception {
+        try (ResultsStore s = ResultsStore.open(freshLocation(), CLOCK)) {
+            s.record(List.of(Records.run(1, "bot-1", "hall", "2.3", 1, 0.1, 0, Map.of("shift", "night")),
+                    Records.run(2, "bot-1", "hall", "2.4", 1, 0.2, 0, Map.of("shift", "night")),
+                    Records.run(3, "bot-2", "yard", "2.4", 2, 0.3, 0, Map.of("shift", "day"))));
+            assertEquals(2, s.select(Selection.parse("version=2.4", "--candidate")).size());
+            assertEquals(List.of("r2"), s.select(Selection.parse("software_version=2.4,shift=night", "x")).stream()
+                    .map(RunRecord::runId).toList());
+            assertEquals(List.of("r3"), s.select(Selection.parse("seed=2", "x")).stream().map(RunRecord::runId)
+                    .toList());
+        }
+    }
+
+    @Test
+    void trendCellsHoldCountSumAndSquaresPerSliceAndDay() throws Exception {
+        try (ResultsStore s = ResultsStore.open(freshLocation(), CLOCK)) {
+            // bot-1: day 0 values 1 and 3 (mean 2, variance ((1-2)^2 + (3-2)^2) / 1 = 2); day 1 value 5
+            s.record(List.of(Records.run(1, "bot-1", "hall", "2.3", 1, 1.0, 10, Map.of()),
+                    Records.run(2, "bot-1", "hall", "2.3", 2, 3.0, 20, Map.of()),
+                    Records.run(3, "bot-1", "hall", "2.3", 3, 5.0, DAY_MS + 5, Map.of()),
+                    Records.run(4, "bot-2", "hall", "2.3", 1, 7.0, 30, Map.of())));
+            List<TrendCell> cells = new ArrayList<>(s.trendCells("ate_trans_rmse_m", "robot", TrendBucket.DAY,
+                    Selection.all(), 0));
+            cells.sort((a, b) -> (a.slice() + a.bucket()).compareTo(b.slice() + b.bucket()));
+            assertEquals(3, cells.size());
+            TrendCell first = cells.get(0);
+            assertEquals("bot-1", first.slice());
+            assertEquals("0", first.bucket());
+            assertEquals(2, first.n());
+            assertEquals(2.0, first.mean(), VALUE_TOL);
+            assertEquals(2.0, first.variance(), VALUE_TOL);
+            assertEquals(10, first.firstMs());
+            assertEquals("1", cells.get(1).bucket());
+            assertEquals(7.0, cells.get(2).mean(), VALUE_TOL);
+        }
+    }
+
+    @Test
+    void concurrentWritersLeaveEachResultExactlyOnce() throws Exception {
+        StoreLocation location = freshLocation();
+        List<RunRecord> all = new ArrayList<>();
+        for (int i = 0; i < 300; i++) {
+            all.add(Records.run(i, "bot-" + (i % 7), "route-" + (i % 5), "2.4", i % 3, 0.01 * i, i * 1000L,
+                    Map.of("k", "v" + (i % 2))));
+        }
+        ExecutorService pool = Executors.newFixedThreadPool(3);
+        try {
+            List<Future<Integer>> writers = new ArrayList<>();
+            for (int w = 0; w < 3; w++) {
+                long seed = w;
+                writers.add(pool.submit(() -> {
+                    // each writer has its own connection (as separate processes would) and its own order
+                    List<RunRecord> mine = new ArrayList<>(all);
+                    Collections.shuffle(mine, new Random(seed));
+                    int inserted = 0;
+                    try (ResultsStore s = ResultsStore.open(location, CLOCK)) {
+                        for (int from = 0; from < mine.size(); from += 25) {
+                            inserted += s.record(mine.subList(from, from + 25));
+                        }
+                    }
+                    return inserted;
+                }));
+            }
+            int inserted = 0;
+            for (Future<Integer> f : writers) {
+                inserted += f.get();
+            }
+            assertEquals(300, inserted, "the writers together inserted each result once");
+        } finally {
+            pool.shutdownNow();
+        }
+        try (ResultsStore s = ResultsStore.open(location, CLOCK)) {
+            assertEquals(300, s.count());
+            List<RunRecord> back = s.select(Selection.all());
+            assertTrue(back.stream().allMatch(r -> r.tags().size() == 1), "every result kept its one tag");
+        }
+    }
+
+    @Test
+    void reopeningAppliesNoMigrationTwice() throws Exception {
+        StoreLocation location = freshLocation();
+        try (ResultsStore s = ResultsStore.open(location, CLOCK)) {
+            s.record(List.of(Records.run(1, "bot-1", "hall", "2.3", 1, 0.1, 0, Map.of())));
+        }
+        try (ResultsStore s = ResultsStore.open(location, CLOCK)) {
+            assertEquals(1, s.count());
+        }
+    }
+}

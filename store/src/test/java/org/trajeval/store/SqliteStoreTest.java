@@ -1,0 +1,66 @@
+package org.trajeval.store;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.sql.Connection;
+import java.sql.DriverManager;
+import java.sql.ResultSet;
+import java.sql.Statement;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The store contract on the embedded SQLite default, plus what is SQLite's own. */
+class SqliteStoreTest extends ResultsStoreContract {
+    @TempDir
+    Path dir;
+    private int count;
+
+    @Override
+    StoreLocation freshLocation() {
+        return StoreLocation.sqlite(dir.resolve("store" + (count++) + ".db"));
+    }
+
+    @Test
+    void theFileIsInWalModeWithTheMigrationRecorded() throws Exception {
+        StoreLocation loc = freshLocation();
+        ResultsStore.open(loc, CLOCK).close();
+        try (Connection c = DriverManager.getConnection(loc.jdbcUrl()); Statement s = c.createStatement()) {
+            try (ResultSet rs = s.executeQuery("PRAGMA journal_mode")) {
+                rs.next();
+                assertEquals("wal", rs.getString(1));
+            }
+            try (ResultSet rs = s.executeQuery("SELECT version, name FROM trajeval_schema_migrations")) {
+                assertTrue(rs.next());
+                assertEquals(1, rs.getInt(1));
+                assertEquals("V1__runs.sql", rs.getString(2));
+            }
+        }
+    }
+
+    @Test
+    void aChangedMigrationIsRefused() throws Exception {
+        StoreLocation loc = freshLocation();
+        ResultsStore.open(loc, CLOCK).close();
+        try (Connection c = DriverManager.getConnection(loc.jdbcUrl()); Statement s = c.createStatement()) {
+            s.executeUpdate("UPDATE trajeval_schema_migrations SET sha256 = 'x' WHERE version = 1");
+        }
+        StoreException e = assertThrows(StoreException.class, () -> ResultsStore.open(loc, CLOCK));
+        assertEquals(StoreException.Problem.SCHEMA, e.problem());
+        assertTrue(e.getMessage().contains("V1__runs.sql was changed after it was applied"), e.getMessage());
+    }
+
+    @Test
+    void aNewerSchemaIsRefused() throws Exception {
+        StoreLocation loc = freshLocation();
+        ResultsStore.open(loc, CLOCK).close();
+        try (Connection c = DriverManager.getConnection(loc.jdbcUrl()); Statement s = c.createStatement()) {
+            s.executeUpdate("INSERT INTO trajeval_schema_migrations VALUES (99, 'V99__future.sql', 'x', 'now')");
+        }
+        StoreException e = assertThrows(StoreException.class, () -> ResultsStore.open(loc, CLOCK));
+        assertEquals(StoreException.Problem.SCHEMA, e.problem());
+        assertTrue(e.getMessage().contains("version 99, newer than this trajeval knows (1)"), e.getMessage());
+    }
+}

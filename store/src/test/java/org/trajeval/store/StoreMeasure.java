@@ -1,0 +1,115 @@
+package org.trajeval.store;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Clock;
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Random;
+import java.util.function.Supplier;
+import org.trajeval.core.protocol.RegressionGate;
+import org.trajeval.core.report.SuiteReport.RunEntry;
+
+/**
+ * The README's store figures: {@code gradle :store:measure [-Pargs="RUNS sqlite|postgresql"]}.
+ * Fills a fresh store with RUNS synthetic run results (50 robots, 5 sites, 20 routes, 3 methods,
+ * 10 software versions over 100 days, seeds 1-5; one tag each), then times the trend queries and
+ * the gate (both sides' selection and the paired statistics): 7 repetitions, median and max.
+ */
+public final class StoreMeasure {
+    private StoreMeasure() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        int runs = args.length > 0 ? Integer.parseInt(args[0]) : 1_000_000;
+        String dialect = args.length > 1 ? args[1] : "sqlite";
+        Path dir = Files.createTempDirectory("trajeval-store-measure");
+        PostgresServer pg = null;
+        StoreLocation loc;
+        if ("postgresql".equals(dialect)) {
+            pg = PostgresServer.start(false);
+            loc = StoreLocation.parse(pg.url(""), pg.env());
+        } else {
+            loc = StoreLocation.sqlite(dir.resolve("measure.db"));
+        }
+        try (ResultsStore s = ResultsStore.open(loc, Clock.systemUTC())) {
+            long t0 = System.nanoTime();
+            Random rnd = new Random(1);
+            List<RunRecord> batch = new ArrayList<>();
+            long start = Instant.parse("2026-08-01T00:00:00Z").toEpochMilli();
+            long span = 100L * 86_400_000L;
+            for (int i = 0; i < runs; i++) {
+                long at = start + (long) ((double) i / runs * span);
+                int version = (int) ((long) i * 10 / runs);
+                int method = i % 3;
+                double ate = (0.08 + 0.02 * method) * (1 + 0.2 * rnd.nextGaussian() * 0.5);
+                batch.add(new RunRecord(ReportRecords.sha256("measure", Integer.toString(i)), "pipeline", "r" + i, 1,
+                        null, null, "bot-" + (i % 50), "site-" + (i % 5), "route-" + ((i / 3) % 20),
+                        "m" + method, "v" + version, (long) (1 + (i / 60) % 5), Instant.ofEpochMilli(at), true, null,
+                        Map.of("ate_trans_rmse_m", ate, "rpe_trans_rmse_m", ate / 3), "measure",
+                        Map.of("shift", i % 2 == 0 ? "day" : "night")));
+                if (batch.size() == 10_000) {
+                    s.record(batch);
+                    batch.clear();
+                }
+            }
+            s.record(batch);
+            double insertS = (System.nanoTime() - t0) / 1e9;
+            System.out.printf(Locale.ROOT, "%s: %d runs recorded in %.1f s (%.0f runs/s); count %d%s%n", dialect,
+                    runs, insertS, runs / insertS, s.count(), "sqlite".equals(dialect)
+                            ? String.format(Locale.ROOT, "; file %.0f MB", Files.size(dir.resolve("measure.db")) / 1e6)
+                            : "");
+            time("trend ate by robot per day (all runs)", () -> Trend.of(s, "ate_trans_rmse_m", "robot",
+                    TrendBucket.DAY, Selection.all(), 0, 0.95).slices().size());
+            time("trend ate by route per version", () -> Trend.of(s, "ate_trans_rmse_m", "route",
+                    TrendBucket.VERSION, Selection.all(), 0, 0.95).slices().size());
+            time("trend ate by robot per day, site=site-3, last 14 days", () -> Trend.of(s, "ate_trans_rmse_m",
+                    "robot", TrendBucket.DAY, Selection.parse("site=site-3", "x"), start + span - 14 * 86_400_000L,
+                    0.95).slices().size());
+            time("gate v8 vs v9 (select both sides + paired statistics)", () -> gate(s, "v8", "v9"));
+            time("gate v8 vs v9 on robot bot-7 only", () -> gate(s, "v8,robot=bot-7", "v9,robot=bot-7"));
+        } finally {
+            if (pg != null) {
+                pg.close();
+            }
+            try (var st = Files.walk(dir)) {
+                st.sorted(java.util.Comparator.reverseOrder()).forEach(p -> p.toFile().delete());
+            }
+        }
+    }
+
+    private static int gate(ResultsStore s, String base, String cand) {
+        List<RunEntry> b = entries(s.select(Selection.parse("software_version=" + base, "b"), false));
+        List<RunEntry> c = entries(s.select(Selection.parse("software_version=" + cand, "c"), false));
+        List<String> seqs = b.stream().map(RunEntry::sequence).distinct().sorted().toList();
+        return RegressionGate.gateAll(b, c, List.of("m0", "m1", "m2"), seqs,
+                Map.of("ate_trans_rmse_m", 0.05, "rpe_trans_rmse_m", 0.05),
+                new RegressionGate.Settings(0.95, 1, 4000)).size();
+    }
+
+    private static List<RunEntry> entries(List<RunRecord> rs) {
+        List<RunEntry> out = new ArrayList<>(rs.size());
+        for (RunRecord r : rs) {
+            out.add(new RunEntry(r.method(), r.route(), r.seed(), "test", null, "ok", null, null, r.metrics(), 0, null));
+        }
+        return out;
+    }
+
+    private static void time(String what, Supplier<Integer> q) {
+        double[] t = new double[7];
+        int result = 0;
+        for (int i = 0; i < t.length; i++) {
+            long t0 = System.nanoTime();
+            result = q.get();
+            t[i] = (System.nanoTime() - t0) / 1e6;
+        }
+        double first = t[0];
+        Arrays.sort(t);
+        System.out.printf(Locale.ROOT, "  %-58s median %7.1f ms, max %7.1f ms (first %7.1f ms) [%d]%n", what, t[3],
+                t[6], first, result);
+    }
+}
