@@ -57,7 +57,7 @@ public final class DbCommand implements Runnable {
         @Override
         public Integer call() {
             if (!store.given()) {
-                throw new IllegalArgumentException("db import: --db is required");
+                throw UsageProblem.of("db import: --db is required");
             }
             Labels labels = Labels.parse(tags);
             PrintWriter out = spec.commandLine().getOut();
@@ -92,7 +92,7 @@ public final class DbCommand implements Runnable {
         @Override
         public Integer call() {
             if (!store.given()) {
-                throw new IllegalArgumentException("db info: --db is required");
+                throw UsageProblem.of("db info: --db is required");
             }
             PrintWriter out = spec.commandLine().getOut();
             try (ResultsStore s = store.open()) {

@@ -126,7 +126,7 @@ public final class GateCommand implements Callable<Integer> {
         List<Finding> findings = RegressionGate.gateAll(sides.baseline(), sides.candidate(), sides.methods(),
                 sides.sequences(), tolerances, settings);
         if (findings.stream().allMatch(f -> f.n() == 0)) {
-            throw new IllegalArgumentException("gate: baseline and candidate have no (sequence, seed) in common: "
+            throw UsageProblem.of("gate: baseline and candidate have no (sequence, seed) in common: "
                     + "nothing to pair");
         }
         out.println("baseline " + sides.baselineName() + ", candidate " + sides.candidateName() + "; "
@@ -146,11 +146,11 @@ public final class GateCommand implements Callable<Integer> {
 
     private Sides fromFiles(PrintWriter err) {
         if (baselinePath == null || candidatePath == null) {
-            throw new IllegalArgumentException("gate: give BASELINE and CANDIDATE suite reports, or --db with "
+            throw UsageProblem.of("gate: give BASELINE and CANDIDATE suite reports, or --db with "
                     + "--baseline and --candidate");
         }
         if (baselineSelection != null || candidateSelection != null) {
-            throw new IllegalArgumentException("gate: --baseline and --candidate select stored runs: they need --db");
+            throw UsageProblem.of("gate: --baseline and --candidate select stored runs: they need --db");
         }
         SuiteReport b = read(baselinePath);
         SuiteReport c = read(candidatePath);
@@ -171,7 +171,7 @@ public final class GateCommand implements Callable<Integer> {
             }
         }
         if (methods.isEmpty()) {
-            throw new IllegalArgumentException("gate: the candidate has no method of the baseline " + baseMethods);
+            throw UsageProblem.of("gate: the candidate has no method of the baseline " + baseMethods);
         }
         List<String> metrics = new ArrayList<>();
         for (SuiteReport.ScoreTerm t : b.protocol().score()) {
@@ -186,11 +186,11 @@ public final class GateCommand implements Callable<Integer> {
 
     private Sides fromStore() {
         if (baselinePath != null || candidatePath != null) {
-            throw new IllegalArgumentException("gate: with --db, select the two sides with --baseline and "
+            throw UsageProblem.of("gate: with --db, select the two sides with --baseline and "
                     + "--candidate instead of report files");
         }
         if (baselineSelection == null || candidateSelection == null) {
-            throw new IllegalArgumentException("gate: --db needs --baseline SELECTION and --candidate SELECTION "
+            throw UsageProblem.of("gate: --db needs --baseline SELECTION and --candidate SELECTION "
                     + "(e.g. software_version=2.3)");
         }
         Selection bs = Selection.parse(baselineSelection, "--baseline");
@@ -202,7 +202,7 @@ public final class GateCommand implements Callable<Integer> {
             c = entries(s.select(cs, false));
         }
         if (b.isEmpty() || c.isEmpty()) {
-            throw new IllegalArgumentException("gate: no stored run matches " + (b.isEmpty() ? "--baseline "
+            throw UsageProblem.of("gate: no stored run matches " + (b.isEmpty() ? "--baseline "
                     + bs : "--candidate " + cs));
         }
         Set<String> seqs = new java.util.TreeSet<>();
@@ -212,7 +212,7 @@ public final class GateCommand implements Callable<Integer> {
         b.forEach(r -> baseMethods.add(r.method()));
         c.stream().map(RunEntry::method).filter(baseMethods::contains).forEach(methods::add);
         if (methods.isEmpty()) {
-            throw new IllegalArgumentException("gate: the candidate runs have no method of the baseline runs "
+            throw UsageProblem.of("gate: the candidate runs have no method of the baseline runs "
                     + baseMethods);
         }
         return new Sides(b, c, List.copyOf(methods), List.copyOf(seqs),
@@ -246,7 +246,7 @@ public final class GateCommand implements Callable<Integer> {
             int eq = spec.indexOf('=');
             String metric = eq < 0 ? spec : spec.substring(0, eq);
             if (!StoredMetric.keys().contains(metric)) {
-                throw new IllegalArgumentException("--max-regression: expected METRIC=PCT with METRIC one of "
+                throw UsageProblem.of("--max-regression: expected METRIC=PCT with METRIC one of "
                         + String.join(", ", StoredMetric.keys()) + ", found \"" + spec + "\"");
             }
             double pct;
@@ -256,7 +256,7 @@ public final class GateCommand implements Callable<Integer> {
                 pct = Double.NaN;
             }
             if (!(pct >= 0 && pct < 1e6)) {
-                throw new IllegalArgumentException("--max-regression: expected METRIC=PCT with PCT a percentage >= 0 "
+                throw UsageProblem.of("--max-regression: expected METRIC=PCT with PCT a percentage >= 0 "
                         + "(e.g. ate_trans_rmse_m=5), found \"" + spec + "\"");
             }
             t.put(metric.equals("score") ? SuiteAnalysis.SCORE : metric, pct / 100.0);

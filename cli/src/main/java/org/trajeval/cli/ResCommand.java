@@ -65,7 +65,7 @@ public final class ResCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         if (!(level > 0 && level < 1)) {
-            throw new IllegalArgumentException("--confidence must be in (0, 1), found " + level);
+            throw UsageProblem.of("--confidence must be in (0, 1), found " + level);
         }
         List<ResultSet> results = new ArrayList<>();
         FigurePage.Progress bar = ProgressBar.counter(spec.commandLine().getErr(), "results");

@@ -63,7 +63,7 @@ public final class SuiteCommand implements Callable<Integer> {
         long start = System.nanoTime();
         Labels labels = Labels.parse(tags);
         if (!tags.isEmpty() && !store.given()) {
-            throw new IllegalArgumentException("--tag labels stored runs: it needs --db");
+            throw UsageProblem.of("--tag labels stored runs: it needs --db");
         }
         SuiteReport r;
         try {

@@ -67,7 +67,7 @@ public final class TrendCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         if (!store.given()) {
-            throw new IllegalArgumentException("trend: --db is required");
+            throw UsageProblem.of("trend: --db is required");
         }
         StoredMetric.require(metric);
         long sinceMs = 0;
@@ -75,7 +75,7 @@ public final class TrendCommand implements Callable<Integer> {
             try {
                 sinceMs = LocalDate.parse(since).atStartOfDay(ZoneOffset.UTC).toInstant().toEpochMilli();
             } catch (DateTimeParseException e) {
-                throw new IllegalArgumentException("--since: expected a date YYYY-MM-DD, found \"" + since + "\"");
+                throw UsageProblem.of("--since: expected a date YYYY-MM-DD, found \"" + since + "\"");
             }
         }
         Selection sel = where == null ? Selection.all() : Selection.parse(where, "--where");

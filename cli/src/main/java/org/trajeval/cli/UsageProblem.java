@@ -17,4 +17,12 @@ final class UsageProblem {
     static InputException of(String option, String detail, String found) {
         return new InputException(null, 0, option, InputProblem.INVALID_OPTION, detail, found);
     }
+
+    /**
+     * @param message the whole one-line message (what was given and what was expected)
+     * @return the exception to throw (an {@link InputException}: exit code 2)
+     */
+    static InputException of(String message) {
+        return new InputException(null, 0, null, InputProblem.INVALID_OPTION, message, null);
+    }
 }

@@ -46,6 +46,23 @@ public class InputException extends RuntimeException {
         this.found = found;
     }
 
+    /**
+     * A file that is not what the command reads (a report, a saved result, an archive): the message
+     * names the file and what was expected.
+     *
+     * @param message the whole one-line message
+     * @param cause the underlying failure, or {@code null}
+     * @return the exception (bad input: exit code 2 in the command line)
+     */
+    public static InputException unreadable(String message, Throwable cause) {
+        return new InputException(null, 0, null, InputProblem.UNREADABLE, message, null, cause);
+    }
+
+    /** As {@link #unreadable(String, Throwable)} without a cause. */
+    public static InputException unreadable(String message) {
+        return unreadable(message, null);
+    }
+
     private static String format(String source, long line, String detail, String found) {
         StringBuilder sb = new StringBuilder();
         if (source != null) {

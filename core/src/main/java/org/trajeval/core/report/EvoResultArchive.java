@@ -1,5 +1,6 @@
 package org.trajeval.core.report;
 
+import org.trajeval.core.InputException;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.ByteArrayInputStream;
@@ -36,7 +37,7 @@ public final class EvoResultArchive {
 
     /**
      * @param name the name to give the result
-     * @throws IllegalArgumentException naming the archive and the entry when it is not an evo result
+     * @throws InputException naming the archive and the entry when it is not an evo result
      */
     public static ResultSet read(Path zip, String name) {
         Map<String, byte[]> entries = entries(zip);
@@ -48,7 +49,7 @@ public final class EvoResultArchive {
         double f = degrees ? Math.PI / 180.0 : 1.0;
         double[] values = array(zip, entries, "error_array");
         if (values == null) {
-            throw new IllegalArgumentException(zip + ": no error_array.npy or error_array.npz entry; not an evo "
+            throw InputException.unreadable(zip + ": no error_array.npy or error_array.npz entry; not an evo "
                     + "--save_results archive");
         }
         double[] t = array(zip, entries, "timestamps");
@@ -79,7 +80,7 @@ public final class EvoResultArchive {
             return ape ? (trans ? ResultSet.Kind.ATE_TRANS : ResultSet.Kind.ATE_ROT)
                     : (trans ? ResultSet.Kind.RPE_TRANS : ResultSet.Kind.RPE_ROT);
         }
-        throw new IllegalArgumentException(zip + ": info.json title expected \"APE|RPE w.r.t. translation part|"
+        throw InputException.unreadable(zip + ": info.json title expected \"APE|RPE w.r.t. translation part|"
                 + "rotation angle ...\", found \"" + title.replace("\n", "\\n") + "\"");
     }
 
@@ -93,10 +94,10 @@ public final class EvoResultArchive {
                 }
             }
         } catch (IOException e) {
-            throw new IllegalArgumentException(zip + ": not a readable zip archive (" + e.getMessage() + ")", e);
+            throw InputException.unreadable(zip + ": not a readable zip archive (" + e.getMessage() + ")", e);
         }
         if (out.isEmpty()) {
-            throw new IllegalArgumentException(zip + ": not a zip archive or empty; evo --save_results archive "
+            throw InputException.unreadable(zip + ": not a zip archive or empty; evo --save_results archive "
                     + "expected");
         }
         return out;
@@ -105,7 +106,7 @@ public final class EvoResultArchive {
     private static byte[] bounded(InputStream in, Path zip, String entry) throws IOException {
         byte[] b = in.readNBytes((int) Math.min(Integer.MAX_VALUE - 8, MAX_ENTRY_BYTES + 1));
         if (b.length > MAX_ENTRY_BYTES) {
-            throw new IllegalArgumentException(zip + ": entry " + entry + " is larger than " + MAX_ENTRY_BYTES
+            throw InputException.unreadable(zip + ": entry " + entry + " is larger than " + MAX_ENTRY_BYTES
                     + " bytes");
         }
         return b;
@@ -114,12 +115,12 @@ public final class EvoResultArchive {
     private static JsonNode json(Path zip, Map<String, byte[]> entries, String name) {
         byte[] b = entries.get(name);
         if (b == null) {
-            throw new IllegalArgumentException(zip + ": no " + name + " entry; not an evo --save_results archive");
+            throw InputException.unreadable(zip + ": no " + name + " entry; not an evo --save_results archive");
         }
         try {
             return JSON.readTree(new String(b, StandardCharsets.UTF_8));
         } catch (IOException e) {
-            throw new IllegalArgumentException(zip + ": " + name + " is not JSON", e);
+            throw InputException.unreadable(zip + ": " + name + " is not JSON", e);
         }
     }
 
@@ -139,11 +140,11 @@ public final class EvoResultArchive {
                 try (ZipInputStream z = new ZipInputStream(new ByteArrayInputStream(b))) {
                     ZipEntry e = z.getNextEntry();
                     if (e == null) {
-                        throw new IllegalArgumentException(zip + ": " + file + " is an empty npz archive");
+                        throw InputException.unreadable(zip + ": " + file + " is an empty npz archive");
                     }
                     return npy(zip, file + "/" + e.getName(), bounded(z, zip, file));
                 } catch (IOException e) {
-                    throw new IllegalArgumentException(zip + ": " + file + " is not a readable npz", e);
+                    throw InputException.unreadable(zip + ": " + file + " is not a readable npz", e);
                 }
             }
             return npy(zip, file, b);
@@ -154,25 +155,25 @@ public final class EvoResultArchive {
     /** numpy's .npy format 1.0/2.0, one-dimensional little-endian float64 only. */
     static double[] npy(Path zip, String entry, byte[] b) {
         if (b.length < 12 || (b[0] & 0xff) != 0x93 || b[1] != 'N' || b[2] != 'U' || b[3] != 'M') {
-            throw new IllegalArgumentException(zip + ": " + entry + " is not a numpy .npy array");
+            throw InputException.unreadable(zip + ": " + entry + " is not a numpy .npy array");
         }
         ByteBuffer bb = ByteBuffer.wrap(b).order(ByteOrder.LITTLE_ENDIAN);
         int major = b[6];
         int headerLen = major == 1 ? bb.getShort(8) & 0xffff : bb.getInt(8);
         int start = (major == 1 ? 10 : 12) + headerLen;
         if (headerLen < 0 || start > b.length) {
-            throw new IllegalArgumentException(zip + ": " + entry + ": header length " + headerLen
+            throw InputException.unreadable(zip + ": " + entry + ": header length " + headerLen
                     + " runs past the end (" + b.length + " bytes)");
         }
         String header = new String(b, major == 1 ? 10 : 12, headerLen, StandardCharsets.ISO_8859_1);
         Matcher m = SHAPE.matcher(header);
         if (!header.contains("'descr': '<f8'") || header.contains("'fortran_order': True") || !m.find()) {
-            throw new IllegalArgumentException(zip + ": " + entry + ": a one-dimensional '<f8' array expected, "
+            throw InputException.unreadable(zip + ": " + entry + ": a one-dimensional '<f8' array expected, "
                     + "found header " + header.trim());
         }
         long n = Long.parseLong(m.group(1));
         if (n * 8 != b.length - start) {
-            throw new IllegalArgumentException(zip + ": " + entry + ": shape (" + n + ",) needs " + (n * 8)
+            throw InputException.unreadable(zip + ": " + entry + ": shape (" + n + ",) needs " + (n * 8)
                     + " bytes of data, found " + (b.length - start));
         }
         double[] out = new double[(int) n];

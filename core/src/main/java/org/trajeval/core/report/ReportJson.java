@@ -1,5 +1,6 @@
 package org.trajeval.core.report;
 
+import org.trajeval.core.InputException;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.databind.ObjectMapper;
@@ -63,7 +64,7 @@ public final class ReportJson {
         try {
             return MAPPER.readValue(json, EvaluationReport.class);
         } catch (JsonProcessingException e) {
-            throw new IllegalArgumentException("not an evaluation report: " + e.getOriginalMessage(), e);
+            throw InputException.unreadable("not an evaluation report: " + e.getOriginalMessage(), e);
         }
     }
 

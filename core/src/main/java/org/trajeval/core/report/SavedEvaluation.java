@@ -1,5 +1,6 @@
 package org.trajeval.core.report;
 
+import org.trajeval.core.InputException;
 import java.io.BufferedReader;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
@@ -55,7 +56,7 @@ public record SavedEvaluation(EvaluationReport report, EvaluationSeries series) 
     /**
      * Reads a folder written by {@link #write}.
      *
-     * @throws IllegalArgumentException naming the file, line and column when a file is not what
+     * @throws InputException naming the file, line and column when a file is not what
      *     {@link #write} writes
      */
     public static SavedEvaluation read(Path dir) {
@@ -64,14 +65,14 @@ public record SavedEvaluation(EvaluationReport report, EvaluationSeries series) 
         try {
             report = ReportJson.parseEvaluation(Files.readString(json));
         } catch (IOException e) {
-            throw new IllegalArgumentException(json + ": cannot be read (" + e.getMessage() + ")", e);
-        } catch (IllegalArgumentException e) {
-            throw new IllegalArgumentException(json + ": " + e.getMessage(), e);
+            throw InputException.unreadable(json + ": cannot be read (" + e.getMessage() + ")", e);
+        } catch (InputException e) {
+            throw InputException.unreadable(json + ": " + e.getMessage(), e);
         }
         Table poses = readGzipCsv(dir.resolve(POSES), POSE_COLUMNS);
         Table pairs = readGzipCsv(dir.resolve(PAIRS), PAIR_COLUMNS);
         if (!poses.timeUnit.equals(pairs.timeUnit)) {
-            throw new IllegalArgumentException(dir.resolve(PAIRS) + ":1: time column '" + pairs.header[0]
+            throw InputException.unreadable(dir.resolve(PAIRS) + ":1: time column '" + pairs.header[0]
                     + "' expected to match " + POSES + "'s '" + poses.header[0] + "'");
         }
         double[][] c = poses.columns;
@@ -127,7 +128,7 @@ public record SavedEvaluation(EvaluationReport report, EvaluationSeries series) 
             List<String> want = pairs ? List.of("s".equals(unit) ? "horizon_s" : "horizon_frames", "rpe_trans_m",
                     "rpe_rot_rad") : expected;
             if (unit.isEmpty() || !rest.equals(want)) {
-                throw new IllegalArgumentException(file + ":1: header expected \"t_s|frame," + String.join(",", want)
+                throw InputException.unreadable(file + ":1: header expected \"t_s|frame," + String.join(",", want)
                         + "\", found \"" + (head == null ? "" : head) + "\"");
             }
             int cols = header.length;
@@ -137,7 +138,7 @@ public record SavedEvaluation(EvaluationReport report, EvaluationSeries series) 
             while ((line = r.readLine()) != null) {
                 String[] f = line.split(",", -1);
                 if (f.length != cols) {
-                    throw new IllegalArgumentException(file + ":" + (n + 2) + ": " + cols + " fields expected, found "
+                    throw InputException.unreadable(file + ":" + (n + 2) + ": " + cols + " fields expected, found "
                             + f.length);
                 }
                 if (n == out[0].length) {
@@ -149,7 +150,7 @@ public record SavedEvaluation(EvaluationReport report, EvaluationSeries series) 
                     try {
                         out[c][n] = f[c].isEmpty() ? Double.NaN : Double.parseDouble(f[c]);
                     } catch (NumberFormatException e) {
-                        throw new IllegalArgumentException(file + ":" + (n + 2) + ": column '" + header[c]
+                        throw InputException.unreadable(file + ":" + (n + 2) + ": column '" + header[c]
                                 + "' must be a number, found \"" + f[c] + "\"");
                     }
                 }
@@ -160,7 +161,7 @@ public record SavedEvaluation(EvaluationReport report, EvaluationSeries series) 
             }
             return new Table(unit, header, out);
         } catch (IOException e) {
-            throw new IllegalArgumentException(file + ": cannot be read as gzip CSV (" + e.getMessage() + ")", e);
+            throw InputException.unreadable(file + ": cannot be read as gzip CSV (" + e.getMessage() + ")", e);
         }
     }
 }

@@ -1,5 +1,6 @@
 package org.trajeval.core.report;
 
+import org.trajeval.core.InputException;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -18,7 +19,7 @@ public final class SavedResults {
 
     /**
      * @param name the name to give the result (a method name), or null for the file name
-     * @throws IllegalArgumentException with one line naming the file when it is none of these
+     * @throws InputException with one line naming the file when it is none of these
      */
     public static ResultSet read(Path path, String name) {
         String n = name != null ? name : stem(path);
@@ -26,7 +27,7 @@ public final class SavedResults {
             return of(SavedEvaluation.read(path), path.toString(), n);
         }
         if (!Files.isRegularFile(path)) {
-            throw new IllegalArgumentException(path + ": no such file or folder");
+            throw InputException.unreadable(path + ": no such file or folder");
         }
         String lower = path.getFileName().toString().toLowerCase(Locale.ROOT);
         if (lower.endsWith(".zip")) {
@@ -36,19 +37,19 @@ public final class SavedResults {
             try {
                 EvaluationReport r = ReportJson.parseEvaluation(Files.readString(path));
                 if (!EvaluationReport.SCHEMA.equals(r.schema())) {
-                    throw new IllegalArgumentException(path + ": schema " + EvaluationReport.SCHEMA
+                    throw InputException.unreadable(path + ": schema " + EvaluationReport.SCHEMA
                             + " expected, found \"" + r.schema() + "\"");
                 }
                 return of(new SavedEvaluation(r, null), path.toString(), n);
             } catch (IOException e) {
-                throw new IllegalArgumentException(path + ": cannot be read (" + e.getMessage() + ")", e);
-            } catch (IllegalArgumentException e) {
+                throw InputException.unreadable(path + ": cannot be read (" + e.getMessage() + ")", e);
+            } catch (InputException e) {
                 throw e.getMessage() != null && e.getMessage().startsWith(path.toString()) ? e
-                        : new IllegalArgumentException(path + ": not a trajeval evaluation report (a suite report? "
+                        : InputException.unreadable(path + ": not a trajeval evaluation report (a suite report? "
                                 + "compare reads those)", e);
             }
         }
-        throw new IllegalArgumentException(path + ": a --save-series folder, an eval --out .json or an evo "
+        throw InputException.unreadable(path + ": a --save-series folder, an eval --out .json or an evo "
                 + "--save_results .zip expected");
     }
 

@@ -1,5 +1,6 @@
 package org.trajeval.core.report;
 
+import org.trajeval.core.InputException;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.databind.ObjectMapper;
@@ -58,7 +59,7 @@ public final class SuiteReportFiles {
         try {
             com.fasterxml.jackson.databind.JsonNode tree = READER.readTree(json);
             if (tree != null && EvaluationReport.SCHEMA.equals(tree.path("schema").asText(null))) {
-                throw new IllegalArgumentException(source + ": an evaluation report (trajeval eval --out), not a "
+                throw InputException.unreadable(source + ": an evaluation report (trajeval eval --out), not a "
                         + "suite report; trajeval res compares evaluation results");
             }
             r = READER.readValue(json, SuiteReport.class);

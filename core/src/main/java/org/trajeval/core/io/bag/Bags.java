@@ -39,6 +39,9 @@ public final class Bags {
         if (Files.isDirectory(path)) {
             return Files.isRegularFile(path.resolve("metadata.yaml")) ? Kind.ROSBAG2_FOLDER : null;
         }
+        if (!Files.isRegularFile(path)) {
+            return null; // a FIFO or device is never opened here (it could block); the reader refuses it
+        }
         byte[] head = new byte[16];
         int n = 0;
         try (InputStream in = Files.newInputStream(path)) {
