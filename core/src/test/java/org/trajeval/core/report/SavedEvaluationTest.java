@@ -82,7 +82,8 @@ class SavedEvaluationTest {
                     + "0,0,0,0,0,0,0,0,0\n0,0,0,0,0,0,0,x,0\n").getBytes(StandardCharsets.UTF_8));
         }
         Files.write(dir.resolve(SavedEvaluation.POSES), b.toByteArray());
-        IllegalArgumentException ex = assertThrows(IllegalArgumentException.class, () -> SavedEvaluation.read(dir));
+        org.trajeval.core.InputException ex = assertThrows(org.trajeval.core.InputException.class,
+                () -> SavedEvaluation.read(dir));
         assertTrue(ex.getMessage().endsWith("poses.csv.gz:3: column 'ate_trans_m' must be a number, found \"x\""),
                 ex.getMessage());
     }
