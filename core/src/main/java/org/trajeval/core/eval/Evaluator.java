@@ -238,6 +238,16 @@ public final class Evaluator {
                     + "across such gaps", droppedInGaps, gaps.size(), gapLimitS, longest.lengthS(), longest.startS(),
                     longest.endS())));
         }
+        if (o.nToAlign() > 0 && alignment.posesUsed() < o.nToAlign()) {
+            warnings.add(new EvaluationReport.Warning("n_to_align_clamped", String.format(Locale.ROOT,
+                    "n-to-align %d is more than the %d associated poses: the alignment was fitted on all %d",
+                    o.nToAlign(), alignment.posesUsed(), alignment.posesUsed())));
+        }
+        if (pairs == 0) {
+            warnings.add(new EvaluationReport.Warning("no_rpe_pairs", String.format(Locale.ROOT,
+                    "no RPE pair: the horizon %s %s is longer than the associated trajectory; choose a shorter "
+                    + "--rpe-delta (rpe_delta)", o.rpeDelta(), o.rpeUnit().symbol())));
+        }
         EvaluationReport.CoverageInfo coverageInfo = new EvaluationReport.CoverageInfo(coverage.fraction(),
                 coverage.longestGapS(), coverage.longestGapStartS(), coverage.uncoveredS(), coverage.referenceSpanS());
         EvaluationReport.AlignmentInfo alignmentInfo = new EvaluationReport.AlignmentInfo(lower(alignment.model()),
