@@ -10,10 +10,10 @@ import org.trajeval.core.eval.EvaluationOptions;
 import org.trajeval.core.report.EvaluationReport;
 
 /**
- * What an eval did differently from what was asked, said out loud instead of silently: an
- * {@code --n-to-align} larger than the associated poses (the fit used them all), and an RPE
- * horizon longer than the trajectory (no pair at all). The second is refused under
- * {@code --overlap strict}, which asks for every requested quantity or nothing.
+ * What an eval did differently from what was asked. The report's warnings say it for every front
+ * end ({@code n_to_align_clamped}, {@code no_rpe_pairs}, printed with the table); here, an RPE
+ * horizon longer than the trajectory (no pair at all) is refused under {@code --overlap strict},
+ * which asks for every requested quantity or nothing.
  */
 final class EvalNotices {
     private EvalNotices() {
@@ -26,12 +26,6 @@ final class EvalNotices {
      */
     static List<String> of(EvaluationReport report, EvaluationOptions options, Integer requestedNToAlign) {
         List<String> notes = new ArrayList<>();
-        EvaluationReport.AlignmentInfo al = report.alignment();
-        if (requestedNToAlign != null && al != null && al.posesUsed() < requestedNToAlign) {
-            notes.add(String.format(Locale.ROOT, "--n-to-align %d is more than the %d associated poses: the "
-                    + "alignment was fitted on all %d (alignment.poses_used)", requestedNToAlign, al.posesUsed(),
-                    al.posesUsed()));
-        }
         EvaluationReport.Rpe rpe = report.rpe();
         if (rpe != null && rpe.pairs() == 0) {
             String what = String.format(Locale.ROOT, "no RPE pair: --rpe-delta %s %s is longer than the associated "
@@ -41,7 +35,6 @@ final class EvalNotices {
                 throw new InputException(null, 0, "--rpe-delta", InputProblem.TOO_FEW_POSES,
                         what + " (refused under --overlap strict)", null);
             }
-            notes.add(what);
         }
         return notes;
     }

@@ -133,6 +133,19 @@ public final class GateCommand implements Callable<Integer> {
                 + sides.sequences().size() + " sequences");
         GateOutput.table(findings, confidence, out);
         out.flush();
+        java.util.List<Path> inputs = new java.util.ArrayList<>();
+        for (Path p : new Path[] {baselinePath, candidatePath}) {
+            if (p != null) {
+                inputs.add(p);
+                inputs.add(p.resolve("report.json"));
+            }
+        }
+        if (markdown != null) {
+            org.trajeval.core.io.OutputGuard.refuseInputs(markdown, "--markdown", inputs);
+        }
+        if (junit != null) {
+            org.trajeval.core.io.OutputGuard.refuseInputs(junit, "--junit", inputs);
+        }
         if (markdown != null) {
             ReportJson.writeAtomically(markdown, GateOutput.markdown(findings, confidence, sides.baselineName(),
                     sides.candidateName()));

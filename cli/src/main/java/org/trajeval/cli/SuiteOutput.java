@@ -29,9 +29,14 @@ final class SuiteOutput {
         if (threads < 1) {
             throw UsageProblem.of("--threads", "--threads must be at least 1", String.valueOf(threads));
         }
-        for (String name : List.of(SuiteReportFiles.JSON, SuiteReportFiles.RUNS_CSV, SuiteReportFiles.METHODS_CSV,
-                SuiteReportFiles.COMPARISONS_CSV, "report.html")) {
+        List<String> written = List.of(SuiteReportFiles.JSON, SuiteReportFiles.RUNS_CSV, SuiteReportFiles.METHODS_CSV,
+                SuiteReportFiles.COMPARISONS_CSV, "report.html");
+        for (String name : written) {
             OutputGuard.refuseInputs(out.resolve(name), "--out", List.of(manifest));
+        }
+        List<Path> trajectories = inputsOf(manifest);
+        for (String name : written) {
+            OutputGuard.refuseInputs(out.resolve(name), "--out", trajectories);
         }
         ExecutorService pool = Executors.newFixedThreadPool(threads);
         try {
@@ -44,6 +49,27 @@ final class SuiteOutput {
         } finally {
             pool.shutdownNow();
         }
+    }
+
+    /**
+     * @return the manifest and every trajectory it names (references, and each method's estimate of
+     *     every sequence and seed), resolved against the manifest's folder: no output may replace one
+     */
+    private static List<Path> inputsOf(Path manifest) {
+        org.trajeval.core.protocol.SuiteManifest m = new org.trajeval.core.protocol.ManifestParser().read(manifest);
+        Path base = manifest.toAbsolutePath().getParent();
+        List<Path> inputs = new java.util.ArrayList<>(List.of(manifest));
+        java.util.Set<Long> seeds = new java.util.TreeSet<>(m.seeds());
+        m.methods().forEach(method -> seeds.addAll(method.seeds()));
+        for (org.trajeval.core.protocol.SequenceSpec s : m.sequences()) {
+            inputs.add(base.resolve(s.reference()));
+            for (org.trajeval.core.protocol.MethodSpec method : m.methods()) {
+                for (long seed : seeds) {
+                    inputs.add(base.resolve(method.estimateFor(s.id(), seed)));
+                }
+            }
+        }
+        return inputs;
     }
 
     /** Prints the hygiene warnings, the method table and the score comparisons. */

@@ -72,6 +72,23 @@ class SuiteCommandsTest {
     }
 
     @Test
+    void suiteRefusesAnOutFolderWhereItWouldOverwriteATrajectoryOfTheManifest() throws IOException {
+        // seq01's reference is moved to collide/runs.csv; --out collide would replace it with the runs table
+        Path collide = Files.createDirectories(dir.resolve("bench/collide"));
+        Files.copy(dir.resolve("bench/data/seq01/reference.csv"), collide.resolve("runs.csv"));
+        byte[] before = Files.readAllBytes(collide.resolve("runs.csv"));
+        Path edited = dir.resolve("bench/collide.yaml");
+        Files.writeString(edited, Files.readString(manifest).replace("reference: data/seq01/reference.csv",
+                "reference: collide/runs.csv"));
+        Run r = run("suite", edited.toString(), "--out", collide.toString(), "--allow-leakage");
+        assertEquals(ExitCodes.BAD_INPUT, r.code(), r.err());
+        assertEquals(1, r.err().strip().lines().count(), r.err());
+        assertTrue(r.err().contains("runs.csv: --out would overwrite the input"), r.err());
+        assertTrue(java.util.Arrays.equals(before, Files.readAllBytes(collide.resolve("runs.csv"))));
+        assertTrue(!Files.exists(collide.resolve("report.json")));
+    }
+
+    @Test
     void compareTwoMethodsOfOneReport() throws IOException {
         Run r = run("compare", report.toString(), "-a", "alpha", "-b", "gamma", "--json");
         assertEquals(0, r.code(), r.err());
