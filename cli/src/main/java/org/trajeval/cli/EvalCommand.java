@@ -94,9 +94,16 @@ public final class EvalCommand implements Callable<Integer> {
         }
         estimate = bagTopic(estimate, Setting.EST_TOPIC, "EST", given);
         SettingValues settings = SettingValues.of(given, null);
+        List<Path> inputs = Stream.of(reference, estimate, path(settings, Setting.REF_TIMES),
+                path(settings, Setting.EST_TIMES)).filter(Objects::nonNull).toList();
         if (out != null) {
-            OutputGuard.refuseInputs(out, "--out", Stream.of(reference, estimate, path(settings, Setting.REF_TIMES),
-                    path(settings, Setting.EST_TIMES)).filter(Objects::nonNull).toList());
+            OutputGuard.refuseInputs(out, "--out", inputs);
+        }
+        if (plots.plotDir != null) {
+            OutputGuard.refuseFolderOfInputs(plots.plotDir, "--plot", inputs);
+        }
+        if (plots.seriesDir != null) {
+            OutputGuard.refuseFolderOfInputs(plots.seriesDir, "--save-series", inputs);
         }
         MemoryBudget.check(reference, estimate, Runtime.getRuntime().maxMemory());
         ReadOptions limits = ReadOptions.defaults();

@@ -87,6 +87,10 @@ public final class TrendCommand implements Callable<Integer> {
         print(r, out);
         out.flush();
         if (html != null) {
+            if (store.db != null && !store.db.startsWith("jdbc:postgresql:")) {
+                org.trajeval.core.io.OutputGuard.refuseInputs(html, "--html",
+                        java.util.List.of(java.nio.file.Path.of(store.db.replaceFirst("^jdbc:sqlite:", ""))));
+            }
             ReportJson.writeAtomically(html, TrendPage.html(r));
         }
         return ExitCodes.OK;

@@ -32,6 +32,26 @@ public final class OutputGuard {
         }
     }
 
+    /**
+     * Refuses an output folder that holds one of the inputs: the files written into it could
+     * replace that input.
+     *
+     * @param dir the folder about to be written into
+     * @param option how the user named it, e.g. {@code --plot}
+     * @param inputs the files read ({@code null} entries are skipped)
+     * @throws InputException ({@link InputProblem#INVALID_OPTION}) naming the option and the input
+     */
+    public static void refuseFolderOfInputs(Path dir, String option, Collection<Path> inputs) {
+        for (Path in : inputs) {
+            Path parent = in == null ? null : in.toAbsolutePath().normalize().getParent();
+            if (parent != null && same(dir, parent)) {
+                throw new InputException(dir.toString(), 0, option, InputProblem.INVALID_OPTION,
+                        option + " is the folder of the input " + in + ", whose files it could replace; write into "
+                        + "another folder", null);
+            }
+        }
+    }
+
     static boolean same(Path a, Path b) {
         try {
             if (Files.exists(a) && Files.exists(b)) {
