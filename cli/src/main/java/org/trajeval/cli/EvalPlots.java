@@ -17,10 +17,11 @@ final class EvalPlots {
 
     /** Evaluates keeping the per-pose series, writes what the options ask for, returns the report. */
     static EvaluationReport write(LoadedTrajectory ref, LoadedTrajectory est, EvaluationOptions options,
-            PlotOptions plots, PrintWriter err) {
+            double[] subTrajectoryLengthsM, PlotOptions plots, PrintWriter err) {
         Evaluation e = Evaluator.run(ref, est, options);
         boolean frames = ref.indexTimestamps() || est.indexTimestamps();
-        SavedEvaluation saved = new SavedEvaluation(e.report(), EvaluationSeries.of(e, frames));
+        SavedEvaluation saved = new SavedEvaluation(e.report(), EvaluationSeries.of(e, frames,
+                subTrajectoryLengthsM));
         if (plots.seriesDir != null) {
             saved.write(plots.seriesDir);
         }

@@ -130,20 +130,21 @@ final class FigurePainter {
             }
         } else if (l instanceof Layer.Boxes bs) {
             for (int i = 0; i < bs.boxes().size(); i++) {
-                box(c, m, i + 1, bs.boxes().get(i));
+                box(c, m, bs.at()[i], bs.halfWidth(), bs.boxes().get(i));
             }
         }
     }
 
-    private static void box(Canvas c, Mapping m, double at, Layer.Box b) {
-        double x0 = m.x(at - 0.25);
-        double x1 = m.x(at + 0.25);
+    private static void box(Canvas c, Mapping m, double at, double half, Layer.Box b) {
+        double x0 = m.x(at - half);
+        double x1 = m.x(at + half);
         double xm = m.x(at);
+        double cap = 0.4 * half;
         c.polyline(new double[] {xm, xm}, new double[] {m.y(b.low()), m.y(b.q1())}, 2, FRAME, 1.2f, false);
         c.polyline(new double[] {xm, xm}, new double[] {m.y(b.q3()), m.y(b.high())}, 2, FRAME, 1.2f, false);
-        c.polyline(new double[] {m.x(at - 0.1), m.x(at + 0.1)}, new double[] {m.y(b.low()), m.y(b.low())}, 2, FRAME,
+        c.polyline(new double[] {m.x(at - cap), m.x(at + cap)}, new double[] {m.y(b.low()), m.y(b.low())}, 2, FRAME,
                 1.2f, false);
-        c.polyline(new double[] {m.x(at - 0.1), m.x(at + 0.1)}, new double[] {m.y(b.high()), m.y(b.high())}, 2,
+        c.polyline(new double[] {m.x(at - cap), m.x(at + cap)}, new double[] {m.y(b.high()), m.y(b.high())}, 2,
                 FRAME, 1.2f, false);
         c.rect(x0, m.y(b.q3()), x1 - x0, Math.max(1, m.y(b.q1()) - m.y(b.q3())), b.rgb(), 0.6, FRAME);
         c.polyline(new double[] {x0, x1}, new double[] {m.y(b.median()), m.y(b.median())}, 2, 0x000000, 2f, false);
@@ -195,6 +196,8 @@ final class FigurePainter {
             c.marker(x + 12, y, 9, p.shape(), p.rgb());
         } else if (l instanceof Layer.Bars b) {
             c.rect(x, y - 6, 24, 12, b.rgb(), 0.85, -1);
+        } else if (l instanceof Layer.Boxes bs && !bs.boxes().isEmpty()) {
+            c.rect(x, y - 6, 24, 12, bs.boxes().get(0).rgb(), 0.6, FRAME);
         } else {
             c.rect(x, y - 6, 24, 12, 0x9ecae1, 0.6, FRAME);
         }

@@ -19,7 +19,8 @@ import java.util.zip.GZIPOutputStream;
 /**
  * One evaluation saved as a folder ({@code trajeval eval --save-series DIR}): the summary
  * {@code report.json}, the per-pose series {@code poses.csv.gz} and the per-pair series
- * {@code pairs.csv.gz}. The tables are gzip CSV with a header naming each unit; pandas reads one
+ * {@code pairs.csv.gz}, and the relative errors per sub-trajectory length {@code segments.csv.gz}
+ * (one row per segment: start time, length (m), translation (%), rotation (deg/m)). The tables are gzip CSV with a header naming each unit; pandas reads one
  * with {@code pd.read_csv("DIR/poses.csv.gz")}. The time column is {@code t_s} (seconds from the
  * first pose) or {@code frame} (files without stamps). Numbers are written with
  * {@link Double#toString} (shortest text that reads back to the same double), so plots redrawn from
@@ -35,12 +36,15 @@ public record SavedEvaluation(EvaluationReport report, EvaluationSeries series) 
     public static final String POSES = "poses.csv.gz";
     /** File name of the per-pair table. */
     public static final String PAIRS = "pairs.csv.gz";
+    /** File name of the per-segment table (absent in folders saved before it was written: no segments). */
+    public static final String SEGMENTS = "segments.csv.gz";
 
     private static final List<String> POSE_COLUMNS = List.of("ref_x_m", "ref_y_m", "ref_z_m", "est_x_m", "est_y_m",
             "est_z_m", "ate_trans_m", "ate_rot_rad");
     private static final List<String> PAIR_COLUMNS = List.of("rpe_trans_m", "rpe_rot_rad");
+    private static final List<String> SEGMENT_COLUMNS = List.of("length_m", "trans_pct", "rot_deg_per_m");
 
-    /** Writes the three files into {@code dir} (each atomically). */
+    /** Writes the four files into {@code dir} (each atomically). */
     public void write(Path dir) {
         EvaluationSeries.Poses p = series.poses();
         EvaluationSeries.Pairs q = series.pairs();
@@ -50,6 +54,9 @@ public record SavedEvaluation(EvaluationReport report, EvaluationSeries series) 
                 p.refZ(), p.estX(), p.estY(), p.estZ(), p.ateTransM(), p.ateRotRad()));
         ReportJson.writeAtomically(dir.resolve(PAIRS), gzipCsv(time, List.of(horizon, "rpe_trans_m", "rpe_rot_rad"),
                 q.t(), q.horizon(), q.rpeTransM(), q.rpeRotRad()));
+        EvaluationSeries.Segments g = series.segments();
+        ReportJson.writeAtomically(dir.resolve(SEGMENTS), gzipCsv(time, SEGMENT_COLUMNS, g.t(), g.lengthM(),
+                g.transPct(), g.rotDegPerM()));
         ReportJson.writeAtomically(dir.resolve(REPORT), ReportJson.toJson(report) + "\n");
     }
 
@@ -75,11 +82,26 @@ public record SavedEvaluation(EvaluationReport report, EvaluationSeries series) 
             throw InputException.unreadable(dir.resolve(PAIRS) + ":1: time column '" + pairs.header[0]
                     + "' expected to match " + POSES + "'s '" + poses.header[0] + "'");
         }
+        EvaluationSeries.Segments segments = EvaluationSeries.Segments.NONE;
+        if (Files.exists(dir.resolve(SEGMENTS))) {
+            Table s = readGzipCsv(dir.resolve(SEGMENTS), SEGMENT_COLUMNS);
+            if (!poses.timeUnit.equals(s.timeUnit)) {
+                throw InputException.unreadable(dir.resolve(SEGMENTS) + ":1: time column '" + s.header[0]
+                        + "' expected to match " + POSES + "'s '" + poses.header[0] + "'");
+            }
+            for (int r = 0; r < s.columns[1].length; r++) {
+                if (!(s.columns[1][r] > 0)) {
+                    throw InputException.unreadable(dir.resolve(SEGMENTS) + ":" + (r + 2)
+                            + ": column 'length_m' must be a number > 0 (m), found \"" + s.columns[1][r] + "\"");
+                }
+            }
+            segments = new EvaluationSeries.Segments(s.columns[1], s.columns[0], s.columns[2], s.columns[3]);
+        }
         double[][] c = poses.columns;
         double[][] d = pairs.columns;
         return new SavedEvaluation(report, new EvaluationSeries(poses.timeUnit,
                 new EvaluationSeries.Poses(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8]),
-                new EvaluationSeries.Pairs(d[0], d[1], d[2], d[3])));
+                new EvaluationSeries.Pairs(d[0], d[1], d[2], d[3]), segments));
     }
 
     private static byte[] gzipCsv(String time, List<String> names, double[]... columns) {
