@@ -15,6 +15,10 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.zip.GZIPInputStream;
 import java.util.zip.GZIPOutputStream;
+import org.trajeval.core.eval.Evaluation;
+import org.trajeval.core.eval.EvaluationOptions;
+import org.trajeval.core.eval.Evaluator;
+import org.trajeval.core.io.LoadedTrajectory;
 
 /**
  * One evaluation saved as a folder ({@code trajeval eval --save-series DIR}): the summary
@@ -43,6 +47,20 @@ public record SavedEvaluation(EvaluationReport report, EvaluationSeries series) 
             "est_z_m", "ate_trans_m", "ate_rot_rad");
     private static final List<String> PAIR_COLUMNS = List.of("rpe_trans_m", "rpe_rot_rad");
     private static final List<String> SEGMENT_COLUMNS = List.of("length_m", "trans_pct", "rot_deg_per_m");
+
+    /**
+     * Scores a pair keeping the per-pose data: what {@code eval --plot / --save-series} and the
+     * pipeline's per-run plots draw from.
+     *
+     * @param subTrajectoryLengthsM lengths of the sub-trajectory errors (m), or null for 10 ... 50 %
+     *     of the reference path
+     */
+    public static SavedEvaluation score(LoadedTrajectory reference, LoadedTrajectory estimate,
+            EvaluationOptions options, double[] subTrajectoryLengthsM) {
+        Evaluation e = Evaluator.run(reference, estimate, options);
+        boolean frames = reference.indexTimestamps() || estimate.indexTimestamps();
+        return new SavedEvaluation(e.report(), EvaluationSeries.of(e, frames, subTrajectoryLengthsM));
+    }
 
     /** Writes the four files into {@code dir} (each atomically). */
     public void write(Path dir) {
