@@ -24,9 +24,15 @@ public final class EvalPlotPage {
      * @return the figures written, in page order
      */
     public static List<Figure> write(SavedEvaluation saved, PlotPlane plane, Path dir, FigurePage.Progress progress) {
+        return write(saved, plane, dir, FigureFormat.DEFAULT, progress);
+    }
+
+    /** As above, every figure in the given formats. */
+    public static List<Figure> write(SavedEvaluation saved, PlotPlane plane, Path dir,
+            java.util.Set<FigureFormat> formats, FigurePage.Progress progress) {
         List<Figure> figures = EvalFigures.of(saved, plane);
         EvaluationReport r = saved.report();
-        FigurePage.write("Evaluation: " + r.inputs().estimate().path(), numbers(r), figures, dir, progress);
+        FigurePage.write("Evaluation: " + r.inputs().estimate().path(), numbers(r), figures, dir, formats, progress);
         return figures;
     }
 
