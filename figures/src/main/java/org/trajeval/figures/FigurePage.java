@@ -80,7 +80,8 @@ public final class FigurePage {
                 + "font-variant-numeric:tabular-nums}th{background:#f3f3f3}td.l,th.l{text-align:left}\n"
                 + ".figs{display:flex;flex-wrap:wrap;gap:8px}figure{margin:0}"
                 + "figure img{max-width:100%;height:auto;border:1px solid #ddd}"
-                + "figcaption{font-size:0.85em;color:#666}\n</style></head><body>\n<h1>" + esc(title) + "</h1>\n"
+                + "figcaption{font-size:0.85em;color:#666}\n"
+                + ".warn{border-left:4px solid #e6a100;background:#fff8e6;padding:4px 10px;margin:0.5em 0}\n</style></head><body>\n<h1>" + esc(title) + "</h1>\n"
                 + numbers + "<div class=\"figs\">\n" + body + "</div>\n</body></html>\n";
         ReportJson.writeAtomically(dir.resolve(INDEX), page);
     }
