@@ -103,6 +103,11 @@ public final class PlanarTrajectory implements Trajectory {
     }
 
     @Override
+    public void rotation(int i, double[] out, int o) {
+        Rotations.aboutZ(yaw[i], out, o);
+    }
+
+    @Override
     public SpatialTrajectory toSpatial() {
         int n = size();
         double[] r = new double[9 * n];

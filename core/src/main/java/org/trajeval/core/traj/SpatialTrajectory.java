@@ -10,15 +10,33 @@ import org.trajeval.core.geom.Rotations;
  * body x axis to world +y. See {@link Rotations} for the storage layout.
  *
  * <p>Immutable: the arrays handed to the factories are owned by the trajectory afterwards.
+ * Memory: built from quaternions, a pose takes 64 B (t, x, y, z, w, qx, qy, qz); the rotation
+ * matrices (72 B per pose) are derived on demand ({@link #rotation}) and only materialised when
+ * {@link #poses()} is asked for (the general path, plots), once.
  */
 public final class SpatialTrajectory implements Trajectory {
     private final double[] t;
-    private final PoseSequence poses;
+    private final double[] px;
+    private final double[] py;
+    private final double[] pz;
     private final double[] q;
+    private volatile PoseSequence poses;
 
     private SpatialTrajectory(double[] t, PoseSequence poses, double[] q) {
         this.t = t;
         this.poses = poses;
+        double[][] p = poses.positionColumns();
+        this.px = p[0];
+        this.py = p[1];
+        this.pz = p[2];
+        this.q = q;
+    }
+
+    private SpatialTrajectory(double[] t, double[] x, double[] y, double[] z, double[] q) {
+        this.t = t;
+        this.px = x;
+        this.py = y;
+        this.pz = z;
         this.q = q;
     }
 
@@ -38,20 +56,18 @@ public final class SpatialTrajectory implements Trajectory {
             TimestampCheck.requireFinite("pose", c);
         }
         int n = t.length;
-        double[] r = new double[9 * n];
         double[] q = new double[4 * n];
         for (int i = 0; i < n; i++) {
             double norm = Math.sqrt(qw[i] * qw[i] + qx[i] * qx[i] + qy[i] * qy[i] + qz[i] * qz[i]);
             if (!(norm > 0.0)) {
                 throw new IllegalArgumentException("quaternion " + i + " is zero");
             }
-            Rotations.fromQuaternion(qw[i], qx[i], qy[i], qz[i], r, 9 * i);
             q[4 * i] = qw[i];
             q[4 * i + 1] = qx[i];
             q[4 * i + 2] = qy[i];
             q[4 * i + 3] = qz[i];
         }
-        return new SpatialTrajectory(t, PoseSequence.of(x, y, z, r), q);
+        return new SpatialTrajectory(t, x, y, z, q);
     }
 
     /**
@@ -85,22 +101,51 @@ public final class SpatialTrajectory implements Trajectory {
 
     @Override
     public double x(int i) {
-        return poses.x(i);
+        return px[i];
     }
 
     @Override
     public double y(int i) {
-        return poses.y(i);
+        return py[i];
     }
 
     @Override
     public double z(int i) {
-        return poses.z(i);
+        return pz[i];
     }
 
-    /** @return the poses without their timestamps */
+    /**
+     * The rotation matrix of pose i: as given (matrices), or {@link Rotations#fromQuaternion} of
+     * the quaternion as read, bit for bit the matrix {@link #poses()} holds.
+     */
+    @Override
+    public void rotation(int i, double[] out, int o) {
+        PoseSequence p = poses;
+        if (p != null) {
+            p.rotation(i, out, o);
+        } else {
+            Rotations.fromQuaternion(q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3], out, o);
+        }
+    }
+
+    /** @return the poses without their timestamps (rotation matrices materialised on first call) */
     public PoseSequence poses() {
-        return poses;
+        PoseSequence p = poses;
+        if (p == null) {
+            synchronized (this) {
+                p = poses;
+                if (p == null) {
+                    int n = t.length;
+                    double[] r = new double[9 * n];
+                    for (int i = 0; i < n; i++) {
+                        Rotations.fromQuaternion(q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3], r, 9 * i);
+                    }
+                    p = PoseSequence.of(px, py, pz, r);
+                    poses = p;
+                }
+            }
+        }
+        return p;
     }
 
     /**
@@ -114,7 +159,7 @@ public final class SpatialTrajectory implements Trajectory {
             System.arraycopy(q, 4 * i, out, 0, 4);
         } else {
             double[] r = new double[9];
-            poses.rotation(i, r, 0);
+            poses().rotation(i, r, 0);
             Rotations.toQuaternion(r, 0, out);
         }
     }
@@ -166,9 +211,9 @@ public final class SpatialTrajectory implements Trajectory {
         double[] yaw = new double[n];
         double[] r = new double[9];
         for (int i = 0; i < n; i++) {
-            x[i] = poses.x(i);
-            y[i] = poses.y(i);
-            poses.rotation(i, r, 0);
+            x[i] = px[i];
+            y[i] = py[i];
+            rotation(i, r, 0);
             yaw[i] = Rotations.yaw(r, 0);
         }
         return PlanarTrajectory.of(t.clone(), x, y, yaw);
@@ -176,7 +221,12 @@ public final class SpatialTrajectory implements Trajectory {
 
     @Override
     public SpatialTrajectory slice(int from, int to) {
-        double[] nq = q == null ? null : java.util.Arrays.copyOfRange(q, 4 * from, 4 * to);
-        return new SpatialTrajectory(java.util.Arrays.copyOfRange(t, from, to), poses.slice(from, to), nq);
+        double[] nt = java.util.Arrays.copyOfRange(t, from, to);
+        if (q == null) {
+            return new SpatialTrajectory(nt, poses.slice(from, to), null);
+        }
+        return new SpatialTrajectory(nt, java.util.Arrays.copyOfRange(px, from, to),
+                java.util.Arrays.copyOfRange(py, from, to), java.util.Arrays.copyOfRange(pz, from, to),
+                java.util.Arrays.copyOfRange(q, 4 * from, 4 * to));
     }
 }
