@@ -119,6 +119,10 @@ final class AssociatedColumns implements PosePairs {
         final double[] q = new double[12];
         final double[] p = new double[12];
         final double[] e = new double[12];
+        /** Translation error of the last pose or pair computed (m). */
+        double transError;
+        /** Rotation error of the last pose or pair computed (rad). */
+        double rotError;
     }
 
     /** Writes the aligned estimate pose k: position into {@code p[0..3)} (m), rotation into {@code r} (9). */
@@ -146,32 +150,17 @@ final class AssociatedColumns implements PosePairs {
         }
     }
 
-    /** @return the ATE translation error of pair k, |p'_k - p_ref,k| (m) */
-    double ateTrans(int k, Scratch s) {
+    /**
+     * The ATE of pair k into {@code s.transError}, |p'_k - p_ref,k| (m), and {@code s.rotError},
+     * the angle of R'_k^T R_ref,k (rad).
+     */
+    void ate(int k, Scratch s) {
         double[] p = s.pi;
-        int i = estAt(k);
-        if (aligned) {
-            double px = scale * est.x(i);
-            double py = scale * est.y(i);
-            double pz = scale * est.z(i);
-            double[] mr = rot;
-            p[0] = mr[0] * px + mr[1] * py + mr[2] * pz + trans[0];
-            p[1] = mr[3] * px + mr[4] * py + mr[5] * pz + trans[1];
-            p[2] = mr[6] * px + mr[7] * py + mr[8] * pz + trans[2];
-        } else {
-            p[0] = est.x(i);
-            p[1] = est.y(i);
-            p[2] = est.z(i);
-        }
+        alignedPose(k, p, s.ri, s.rp);
         double dx = p[0] - refPositions.x(k);
         double dy = p[1] - refPositions.y(k);
         double dz = p[2] - refPositions.z(k);
-        return Math.sqrt(dx * dx + dy * dy + dz * dz);
-    }
-
-    /** @return the ATE rotation error of pair k, the angle of R'_k^T R_ref,k (rad) */
-    double ateRot(int k, Scratch s) {
-        alignedPose(k, s.pi, s.ri, s.rp);
+        s.transError = Math.sqrt(dx * dx + dy * dy + dz * dz);
         referenceRotation(k, s.rj, 0);
         double[] re = s.ri;
         double[] rr = s.rj;
@@ -181,11 +170,14 @@ final class AssociatedColumns implements PosePairs {
                 e[3 * r + c] = re[r] * rr[c] + re[3 + r] * rr[3 + c] + re[6 + r] * rr[6 + c];
             }
         }
-        return Rotations.angle(e, 0);
+        s.rotError = Rotations.angle(e, 0);
     }
 
-    /** Writes E of pair (i, j) into {@code s.e} (R: e[0..9), t: e[9..12)). */
-    private void rpe(int i, int j, Scratch s) {
+    /**
+     * The RPE of pair (i, j): E = (Q_i^-1 Q_j)^-1 (P'_i^-1 P'_j) into {@code s.e} (R: e[0..9),
+     * t: e[9..12)), |trans(E)| (m) into {@code s.transError}, its angle (rad) into {@code s.rotError}.
+     */
+    void rpe(int i, int j, Scratch s) {
         referenceRotation(i, s.ri, 0);
         referenceRotation(j, s.rj, 0);
         RelativeMotion.inverseTimes(s.ri, refPositions.x(i), refPositions.y(i), refPositions.z(i), s.rj,
@@ -195,20 +187,10 @@ final class AssociatedColumns implements PosePairs {
         RelativeMotion.inverseTimes(s.ri, s.pi[0], s.pi[1], s.pi[2], s.rj, s.pj[0], s.pj[1], s.pj[2], s.p);
         double[] q = s.q;
         double[] p = s.p;
-        RelativeMotion.inverseTimes(q, q[9], q[10], q[11], p, p[9], p[10], p[11], s.e);
-    }
-
-    /** @return the RPE translation error of pair (i, j), |trans(E)| (m) */
-    double rpeTrans(int i, int j, Scratch s) {
-        rpe(i, j, s);
         double[] e = s.e;
-        return Math.sqrt(e[9] * e[9] + e[10] * e[10] + e[11] * e[11]);
-    }
-
-    /** @return the RPE rotation error of pair (i, j), the angle of E (rad) */
-    double rpeRot(int i, int j, Scratch s) {
-        rpe(i, j, s);
-        return Rotations.angle(s.e, 0);
+        RelativeMotion.inverseTimes(q, q[9], q[10], q[11], p, p[9], p[10], p[11], e);
+        s.transError = Math.sqrt(e[9] * e[9] + e[10] * e[10] + e[11] * e[11]);
+        s.rotError = Rotations.angle(e, 0);
     }
 
     /** @return the length of the associated reference path from pose k to k + 1 (m) */

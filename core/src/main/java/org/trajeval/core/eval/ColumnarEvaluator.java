@@ -15,7 +15,6 @@ import org.trajeval.core.metric.PairSelection;
 import org.trajeval.core.metric.RpeUnit;
 import org.trajeval.core.report.EvaluationReport;
 import org.trajeval.core.stats.ErrorStatistics;
-import org.trajeval.core.stats.ValueChunks;
 import org.trajeval.core.traj.PlanarTrajectory;
 import org.trajeval.core.traj.SpatialTrajectory;
 import org.trajeval.core.traj.Trajectory;
@@ -28,9 +27,9 @@ import org.trajeval.core.traj.Trajectory;
  * for bit for the per-pose errors; planar data is the case whose rotations are about +z.
  *
  * <p>Memory on top of the inputs: the reference interpolated at the estimate stamps (planar 24 B,
- * SE(3) 56 B per pose; none for nearest matching, 8 B of index maps instead) and one error array
- * (8 B per pose) that the RPE rotation, ATE translation and ATE rotation errors take in turn; the
- * RPE translation errors are computed again at each reading of their statistics.
+ * SE(3) 56 B per pose; none for nearest matching, 8 B of index maps instead) and two error arrays
+ * (translation and rotation, 16 B per pose) that the RPE and then the ATE fill; every RPE pair and
+ * every ATE pose is computed once.
  */
 final class ColumnarEvaluator {
     private ColumnarEvaluator() {
@@ -73,30 +72,28 @@ final class ColumnarEvaluator {
                 planar);
         pairs.align(tf);
 
-        // ---- errors and statistics: RPE translation streamed (recomputed at each reading), then
-        // RPE rotation, ATE translation and ATE rotation in turn in one array
+        // ---- errors and statistics: each RPE pair and each ATE pose computed once, translation
+        // into one array and rotation into another; the ATE reuses the arrays of the RPE
         PairRule rule = o.pairSelection() == PairSelection.ALL_PAIRS && o.rpeDelta() > 0
                 ? new EveryStart(pairs, o.rpeDelta(), o.rpeUnit(), par)
+                : o.rpeUnit() == RpeUnit.FRAMES && o.rpeDelta() >= 1 ? new Stride(pairs, (int) o.rpeDelta(), par)
                 : new Walk(pairs, new PairWalk(pairs, o.rpeDelta(), o.rpeUnit(), o.pairSelection()));
-        ErrorStatistics rpeTrans = ErrorStatistics.of(rule.translationErrors());
-        double[] err = new double[m];
-        rule.rotationErrorsInto(err);
+        double[] trans = new double[m];
+        double[] rot = new double[m];
+        rule.errorsInto(trans, rot);
         int count = rule.pairs();
-        ErrorStatistics rpeRot = ErrorStatistics.ofInPlace(err, count);
+        ErrorStatistics rpeTrans = ErrorStatistics.ofInPlace(trans, count);
+        ErrorStatistics rpeRot = ErrorStatistics.ofInPlace(rot, count);
         par.forEachChunk(m, (c, from, to) -> {
             AssociatedColumns.Scratch s = new AssociatedColumns.Scratch();
             for (int k = from; k < to; k++) {
-                err[k] = pairs.ateTrans(k, s);
+                pairs.ate(k, s);
+                trans[k] = s.transError;
+                rot[k] = s.rotError;
             }
         });
-        ErrorStatistics ateTrans = ErrorStatistics.ofInPlace(err, m);
-        par.forEachChunk(m, (c, from, to) -> {
-            AssociatedColumns.Scratch s = new AssociatedColumns.Scratch();
-            for (int k = from; k < to; k++) {
-                err[k] = pairs.ateRot(k, s);
-            }
-        });
-        ErrorStatistics ateRot = ErrorStatistics.ofInPlace(err, m);
+        ErrorStatistics ateTrans = ErrorStatistics.ofInPlace(trans, m);
+        ErrorStatistics ateRot = ErrorStatistics.ofInPlace(rot, m);
         Coverage coverage = Coverage.compute(pairs::stamp, m, ref.t(0), ref.t(ref.size() - 1));
         return new ReportParts(m, a.dropped(), a.droppedReference(), a.maxGapS(), a.aMaxMps2(), a.gapLimitS(), tf,
                 warnings, ateTrans, ateRot, rpeTrans, rpeRot, count,
@@ -214,11 +211,8 @@ final class ColumnarEvaluator {
             return sumM;
         }
 
-        /** @return the translation errors of the pairs in pair order, computed afresh at each reading (m) */
-        abstract ValueChunks translationErrors();
-
-        /** Writes the rotation error of pair p to out[p] (rad). */
-        abstract void rotationErrorsInto(double[] out);
+        /** Writes the translation error (m) and rotation error (rad) of pair p to trans[p] and rot[p]. */
+        abstract void errorsInto(double[] trans, double[] rot);
     }
 
     /**
@@ -272,31 +266,62 @@ final class ColumnarEvaluator {
         }
 
         @Override
-        ValueChunks translationErrors() {
-            return ValueChunks.of(pairs, sink -> {
-                AssociatedColumns.Scratch s = new AssociatedColumns.Scratch();
-                double[] chunk = new double[Math.min(Parallelism.CHUNK, Math.max(pairs, 1))];
-                int len = 0;
-                for (walk.start(); walk.next();) {
-                    chunk[len++] = poses.rpeTrans(walk.i(), walk.j(), s);
-                    if (len == chunk.length) {
-                        sink.accept(chunk, len);
-                        len = 0;
-                    }
-                }
-                if (len > 0) {
-                    sink.accept(chunk, len);
-                }
-            });
-        }
-
-        @Override
-        void rotationErrorsInto(double[] out) {
+        void errorsInto(double[] trans, double[] rot) {
             AssociatedColumns.Scratch s = new AssociatedColumns.Scratch();
             int p = 0;
             for (walk.start(); walk.next();) {
-                out[p++] = poses.rpeRot(walk.i(), walk.j(), s);
+                poses.rpe(walk.i(), walk.j(), s);
+                trans[p] = s.transError;
+                rot[p++] = s.rotError;
             }
+        }
+    }
+
+    /**
+     * RPE in frames between poses d apart, not overlapping: pair p is (p d, p d + d), so chunks
+     * of pairs are independent (evo's default, {@code --delta 1 --delta_unit f}).
+     */
+    private static final class Stride extends PairRule {
+        private final int d;
+        private final Parallelism par;
+
+        Stride(AssociatedColumns poses, int d, Parallelism par) {
+            super(poses);
+            this.d = d;
+            this.par = par;
+            int m = poses.size();
+            pairs = m > d ? (m - 1) / d : 0; // the p with p d + d < m
+            int chunks = Parallelism.chunks(pairs);
+            double[] chunkS = new double[chunks];
+            double[] chunkM = new double[chunks];
+            par.forEachChunk(pairs, (c, from, to) -> {
+                double sum = 0;
+                double len = 0;
+                PathSpan path = new PathSpan(poses, from * d);
+                for (int p = from; p < to; p++) {
+                    int i = p * d;
+                    sum += poses.stamp(i + d) - poses.stamp(i);
+                    len += path.between(i, i + d);
+                }
+                chunkS[c] = sum;
+                chunkM[c] = len;
+            });
+            for (int c = 0; c < chunks; c++) {
+                sumS += chunkS[c];
+                sumM += chunkM[c];
+            }
+        }
+
+        @Override
+        void errorsInto(double[] trans, double[] rot) {
+            par.forEachChunk(pairs, (c, from, to) -> {
+                AssociatedColumns.Scratch s = new AssociatedColumns.Scratch();
+                for (int p = from; p < to; p++) {
+                    poses.rpe(p * d, p * d + d, s);
+                    trans[p] = s.transError;
+                    rot[p] = s.rotError;
+                }
+            });
         }
     }
 
@@ -380,45 +405,15 @@ final class ColumnarEvaluator {
         }
 
         @Override
-        ValueChunks translationErrors() {
-            return ValueChunks.of(pairs, sink -> {
-                // a window of one chunk per thread is computed at once, then handed over in order
-                int chunks = Parallelism.chunks(pairs);
-                int window = par.threads();
-                double[][] scratch = new double[Math.min(window, Math.max(chunks, 1))][];
-                for (int first = 0; first < chunks; first += window) {
-                    int start = first;
-                    int count = Math.min(window, chunks - first);
-                    par.forEach(count, q -> {
-                        int from = (start + q) * Parallelism.CHUNK;
-                        int to = (int) Math.min((long) from + Parallelism.CHUNK, pairs);
-                        if (scratch[q] == null) {
-                            scratch[q] = new double[Math.min(Parallelism.CHUNK, pairs)];
-                        }
-                        double[] out = scratch[q];
-                        AssociatedColumns.Scratch s = new AssociatedColumns.Scratch();
-                        int j = frames ? from : firstPartner(from);
-                        for (int i = from; i < to; i++) {
-                            j = partner(i, j);
-                            out[i - from] = poses.rpeTrans(i, j, s);
-                        }
-                    });
-                    for (int q = 0; q < count; q++) {
-                        int from = (start + q) * Parallelism.CHUNK;
-                        sink.accept(scratch[q], (int) Math.min((long) Parallelism.CHUNK, pairs - from));
-                    }
-                }
-            });
-        }
-
-        @Override
-        void rotationErrorsInto(double[] out) {
+        void errorsInto(double[] trans, double[] rot) {
             par.forEachChunk(pairs, (c, from, to) -> {
                 AssociatedColumns.Scratch s = new AssociatedColumns.Scratch();
                 int j = frames ? from : firstPartner(from);
                 for (int i = from; i < to; i++) {
                     j = partner(i, j);
-                    out[i] = poses.rpeRot(i, j, s);
+                    poses.rpe(i, j, s);
+                    trans[i] = s.transError;
+                    rot[i] = s.rotError;
                 }
             });
         }
