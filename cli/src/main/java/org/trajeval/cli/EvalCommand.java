@@ -148,7 +148,8 @@ public final class EvalCommand implements Callable<Integer> {
             FormatApplicability.check(settings, ref, reference.toString(), est, estimate.toString());
             EvaluationOptions options = SettingsResolver.evaluationOptions(settings,
                     DataKind.of(ref.trajectory(), est.trajectory()));
-            report = plots.wanted() ? EvalPlots.write(ref, est, options, plots, spec.commandLine().getErr())
+            report = plots.wanted() ? EvalPlots.write(ref, est, options,
+                    SettingsResolver.subTrajectoryLengthsM(settings), plots, spec.commandLine().getErr())
                     : Evaluator.evaluate(ref, est, options, work.parallelism());
             notices = EvalNotices.of(report, options, (Integer) settings.get(Setting.N_TO_ALIGN));
         }
