@@ -143,7 +143,8 @@ public final class ReportStore {
             }
             Instant now = clock.instant();
             PipelineReport report = new PipelineReport(PipelineReport.SCHEMA, PipelineReport.SCHEMA_VERSION,
-                    Version.TOOL, m.runId(), m.robotId(), m.sequence(), m.method(), m.seed(), version,
+                    Version.TOOL, m.runId(), m.robotId(), m.sequence(), m.method(), m.seed(), m.labels().site(),
+                    m.labels().softwareVersion(), m.labels().tags().isEmpty() ? null : m.labels().tags(), version,
                     hash.content(), hash.reference(), hash.estimate(), job.source(), now.toString(), evaluation);
             Path file = reportFile(m.runId(), version);
             writer.accept(file, ReportJson.toJson(report));

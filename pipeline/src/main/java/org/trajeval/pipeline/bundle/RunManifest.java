@@ -42,7 +42,7 @@ public record RunManifest(RunMetadata metadata, String reference, String estimat
     public static final String FILE_NAME = "run.yaml";
 
     private static final ObjectMapper YAML = org.trajeval.core.io.StrictMappers.yaml();
-    private static final Set<String> KEYS = Set.of("run_id", "robot_id", "sequence", "method", "seed", "reference",
+    private static final Set<String> KEYS = RunFields.keysWith("reference",
             "estimate", "metrics", "plot");
 
     /**
