@@ -10,8 +10,8 @@ import java.util.Arrays;
 final class Decimate {
     /** Points kept of a path. */
     static final int PATH_POINTS = 20_000;
-    /** Buckets of a time series (two points each). */
-    static final int SERIES_BUCKETS = 2_000;
+    /** Buckets of a time series (two points each): about two per pixel of the plot area at 1x, one at 2x. */
+    static final int SERIES_BUCKETS = 1_000;
 
     private Decimate() {
     }
