@@ -8,7 +8,8 @@ import org.trajeval.core.report.EvaluationSeries;
 /**
  * Box plots of the relative error per sub-trajectory length (rpg_trajectory_evaluation's
  * figure): one category per length, translation (%) and rotation (deg/m), one box per result
- * and length (results side by side within a length, coloured by result). Drawn by
+ * and length (results side by side within a length, coloured by result); Tukey whiskers, outliers
+ * not drawn (as rpg's plots), so the axis ends at the highest whisker. Drawn by
  * {@code eval --plot} for one result and by {@code res --plot} for several.
  */
 final class SubTrajectoryFigures {
@@ -66,8 +67,9 @@ final class SubTrajectoryFigures {
                 if (v.length == 0) {
                     continue;
                 }
-                values.add(v);
-                boxes.add(ResFigures.box(v, n.rgb()));
+                Layer.Box box = ResFigures.box(v, n.rgb());
+                values.add(new double[] {box.high()}); // the axis ends at the highest whisker: outliers are not drawn
+                boxes.add(box);
                 at.add(li + 1 + (ri - (r - 1) / 2.0) * spacing);
             }
             if (!boxes.isEmpty()) {

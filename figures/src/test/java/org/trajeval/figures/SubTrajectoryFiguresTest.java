@@ -46,6 +46,15 @@ class SubTrajectoryFiguresTest {
     }
 
     @Test
+    void theAxisEndsAtTheHighestWhiskerNotAtAnOutlier() {
+        // {1, 2, 3, 4, 100}: Q1 2, Q3 4, upper fence 4 + 1.5 x 2 = 7, so the whisker ends at 4 and 100 is an outlier
+        EvaluationSeries.Segments s = new EvaluationSeries.Segments(new double[] {10, 10, 10, 10, 10},
+                new double[] {0, 1, 2, 3, 4}, new double[] {1, 2, 3, 4, 100}, new double[] {1, 1, 1, 1, 1});
+        Figure trans = SubTrajectoryFigures.of(List.of(new SubTrajectoryFigures.Named(null, 0, s))).get(0);
+        assertEquals(4 * 1.05, trans.y().max(), 1e-12);
+    }
+
+    @Test
     void withoutSegmentsThereIsNoSubTrajectoryFigure() {
         List<Figure> figures = EvalFigures.of(EvalFiguresTest.kittiLikeDrive(100, "se3", false), PlotPlane.AUTO);
         assertTrue(figures.stream().noneMatch(f -> f.name().startsWith("subtraj")));
