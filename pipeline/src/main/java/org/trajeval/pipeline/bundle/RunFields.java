@@ -115,6 +115,23 @@ public final class RunFields {
         return v.asText();
     }
 
+    /**
+     * @return the run's {@code plot} switch (false when absent): draw {@code eval --plot}'s figures
+     *     beside the report
+     * @throws InputException when it is not true or false
+     */
+    public static boolean plot(JsonNode node, String source) {
+        JsonNode v = node.get("plot");
+        if (v == null || v.isNull()) {
+            return false;
+        }
+        if (!v.isBoolean()) {
+            throw new InputException(source, 0, "plot", InputProblem.INVALID_CONFIGURATION,
+                    "'plot' must be true or false", v.asText());
+        }
+        return v.asBoolean();
+    }
+
     private static Long seed(JsonNode node, String source) {
         JsonNode v = node.get("seed");
         if (v == null || v.isNull()) {
