@@ -15,8 +15,9 @@ import java.util.zip.CRC32;
  * MCAP files (mcap.dev/spec): magic, then records of {@code opcode u8, length u64, content}. With a
  * summary section (found through the footer), only the chunks whose message indexes name a wanted
  * channel are read and decompressed; without one, the data section is scanned from the start. The
- * summary CRC and each chunk's CRC of its uncompressed records are checked when the writer set them
- * (0 means "not computed", as the spec says).
+ * data section CRC ({@link McapDataCrc}, one sequential pass over the data section at open), the
+ * summary CRC and each read chunk's CRC of its uncompressed records are checked when the writer set
+ * them (0 means "not computed", as the spec says).
  */
 final class McapReader implements BagContainer {
     static final byte[] MAGIC = {(byte) 0x89, 'M', 'C', 'A', 'P', 0x30, '\r', '\n'};
@@ -70,18 +71,21 @@ final class McapReader implements BagContainer {
             throw BagProblems.corrupt(source, 0, "not an MCAP file (the first 8 bytes are not the MCAP magic)");
         }
         long footerAt = size - MAGIC.length - FOOTER_RECORD_BYTES;
+        long dataEndAt = -1;
         if (footerAt >= MAGIC.length) {
             byte[] tail = file.read(footerAt, FOOTER_RECORD_BYTES + MAGIC.length, "footer");
             boolean magicEnd = Arrays.equals(Arrays.copyOfRange(tail, FOOTER_RECORD_BYTES, tail.length), MAGIC);
             if (magicEnd && tail[0] == OP_FOOTER && ByteCursor.le64(tail, 1) == 20) {
                 long summaryStart = ByteCursor.le64(tail, 9);
                 long summaryCrc = ByteCursor.le32(tail, 25) & 0xffffffffL;
+                dataEndAt = (summaryStart != 0 ? summaryStart : footerAt) - McapDataCrc.DATA_END_RECORD_BYTES;
                 if (summaryStart != 0) {
                     readSummary(summaryStart, footerAt, tail, summaryCrc);
                     indexed = !chunks.isEmpty() || !channels.isEmpty();
                 }
             }
         }
+        McapDataCrc.verify(file, source, dataEndAt);
         if (!indexed) {
             // no summary: the channels come from one pass over the data section
             scan(c -> false, (ch, t, d, o, l) -> {
