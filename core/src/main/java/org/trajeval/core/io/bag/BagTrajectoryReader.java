@@ -34,7 +34,7 @@ public final class BagTrajectoryReader {
         String source = path.toString();
         PoseColumns cols = new PoseColumns();
         String reason;
-        try (BagContainer c = Bags.open(path, source, bag.limits())) {
+        try (BagContainer c = Bags.open(path, source, bag.limits(), bag.integrity())) {
             if (TfTrajectory.isTfId(bag.topic())) {
                 long dropped = TfTrajectory.read(c, source, bag, cols);
                 reason = "auto: " + c.kind() + " bag, TF " + bag.topic() + (dropped == 0 ? ""

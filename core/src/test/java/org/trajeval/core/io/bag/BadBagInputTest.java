@@ -123,6 +123,31 @@ class BadBagInputTest {
     }
 
     @Test
+    void integrityChunksSkipsTheDataSectionPassButStillChecksTheChunksRead() throws IOException {
+        // the 40 images logged after the 40 poses: chunks of 5 are pose-only, then image-only
+        BagWriters.Topic late = new BagWriters.Topic("/image", "sensor_msgs/msg/Image", "uint8[] data\n");
+        for (BagWriters.Pose q : POSES) {
+            late.add(q.stampNs() + 1_000_000_000_000L, IMAGE);
+        }
+        byte[] b = BagWriters.mcap(List.of(poseTopic(), late), "", 5, true);
+        b[lastIndexOf(b, IMAGE) + 17] ^= 0x01; // in an image chunk: only the data section CRC can see it
+        Path p = dir.resolve("chunks.mcap");
+        Files.write(p, b);
+        BagReadOptions chunks = new BagReadOptions("/pose", StampSource.HEADER, null, BagLimits.DEFAULT,
+                BagIntegrity.CHUNKS);
+        assertEquals(POSES.size(), BagTrajectoryReader.read(p, chunks, ReadOptions.defaults()).trajectory().size());
+        assertTrue(refused(b, "chunks-all.mcap", "/pose").getMessage().contains("data section CRC mismatch"));
+
+        byte[] c = BagWriters.mcap(List.of(poseTopic(), imageTopic()), "", 5, true);
+        int at = lastIndexOf(c, BagWriters.cdrPoseStamped(POSES.get(POSES.size() - 1))) + 60;
+        c[at] ^= 0x10; // in a pose chunk: its own CRC refuses it under either choice
+        Files.write(p, c);
+        InputException e = assertThrows(InputException.class,
+                () -> BagTrajectoryReader.read(p, chunks, ReadOptions.defaults()));
+        assertTrue(e.getMessage().contains("CRC of the uncompressed records mismatch"), e.getMessage());
+    }
+
+    @Test
     void dataSectionCrcZeroMeansNotComputedAndTheWantedChunksStillRead() throws IOException {
         byte[] b = BagWriters.mcap(List.of(poseTopic(), imageTopic()), "lz4", 5, true);
         int dataEnd = lastIndexOf(b, new byte[] {0x0F, 4, 0, 0, 0, 0, 0, 0, 0});
