@@ -17,7 +17,10 @@ import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.Warmup;
 import org.trajeval.core.io.LoadedTrajectory;
 import org.trajeval.core.io.ReadOptions;
+import org.trajeval.core.io.bag.BagIntegrity;
+import org.trajeval.core.io.bag.BagLimits;
 import org.trajeval.core.io.bag.BagReadOptions;
+import org.trajeval.core.io.bag.StampSource;
 import org.trajeval.core.io.bag.BagTrajectoryReader;
 
 /**
@@ -46,7 +49,12 @@ public class BagBenchmarks {
     @Param({"none", "lz4"})
     public String compression;
 
+    /** bag_crc: all (the data section CRC pass over the whole file too) or chunks (the chunks read only). */
+    @Param({"all", "chunks"})
+    public String bagCrc;
+
     private Path bag;
+    private BagReadOptions options;
 
     @Setup
     public void writeBag() throws IOException {
@@ -54,11 +62,13 @@ public class BagBenchmarks {
         Files.createDirectories(dir);
         bag = BenchBag.write(dir.resolve("poses-" + poses + "-heavy" + heavyEvery + "-" + compression + ".mcap"),
                 poses, heavyEvery, compression.equals("none") ? "" : compression);
+        options = new BagReadOptions("/pose", StampSource.HEADER, null, BagLimits.DEFAULT,
+                BagIntegrity.valueOf(bagCrc.toUpperCase(java.util.Locale.ROOT)));
     }
 
     @Benchmark
     public int readPoseTopic() {
-        LoadedTrajectory t = BagTrajectoryReader.read(bag, BagReadOptions.of("/pose"), ReadOptions.defaults());
+        LoadedTrajectory t = BagTrajectoryReader.read(bag, options, ReadOptions.defaults());
         return t.trajectory().size();
     }
 }
