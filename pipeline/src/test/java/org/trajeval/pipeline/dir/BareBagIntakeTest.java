@@ -168,6 +168,20 @@ class BareBagIntakeTest {
     }
 
     @Test
+    void bagClaimedByAServiceThatDiedIsResumedAndReportedOnce() throws IOException {
+        // a kill after the claim leaves processing/SLOT with the bag and its marker (its lock free)
+        Path slot = Files.createDirectories(root.resolve("processing/r5.mcap"));
+        Files.copy(ros().resolve("nav2_turtlebot.mcap"), slot.resolve("r5.mcap"));
+        Files.writeString(slot.resolve("r5.done"), "");
+        Files.writeString(slot.resolve(".lock"), "");
+        StringWriter out = new StringWriter();
+        assertEquals(0, drain(out, "--config", config(NAV2_CONFIG).toString()), out.toString());
+        assertTrue(out.toString().contains("reported=1 duplicates=0 failed=0"), out.toString());
+        assertTrue(Files.isRegularFile(root.resolve("reports/r5.json")));
+        assertEquals(0, entries(root.resolve("processing")));
+    }
+
+    @Test
     void bareBagWithoutConfiguredTopicsIsRefusedNamingTheSettings() throws IOException {
         Files.copy(ros().resolve("nav2_turtlebot.mcap"), incoming().resolve("r9.mcap"));
         Files.writeString(incoming().resolve("r9.done"), "");
