@@ -40,14 +40,15 @@ import picocli.CommandLine.Model.CommandSpec;
                 + "in a suite manifest's metrics, a run.yaml and a Kafka run event."},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success", "1:internal error (a bug; rerun with --verbose)",
-            "2:bad input or usage (one line names file, line and what was expected)"})
+            "2:bad input or usage (one line names file, line and what was expected)",
+            "4:--batch: some pairs could not be scored (failed rows of summary.csv, one stderr line each)"})
 public final class EvalCommand implements Callable<Integer> {
 
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "REF", description = "Reference (ground-truth) trajectory file, or a ROS "
-            + "bag (with --ref-topic, or written BAG:TOPIC).")
+    @Parameters(index = "0", arity = "0..1", paramLabel = "REF", description = "Reference (ground-truth) trajectory "
+            + "file, or a ROS bag (with --ref-topic, or written BAG:TOPIC).")
     Path reference;
 
     @Parameters(index = "1", arity = "0..1", paramLabel = "EST", description = "Estimated trajectory file, or a bag "
@@ -79,9 +80,31 @@ public final class EvalCommand implements Callable<Integer> {
     @Option(names = "--verbose", description = "Print stack traces of errors.")
     boolean verbose;
 
+    @Option(names = "--batch", paramLabel = "PAIRS.csv", description = "Score every pair of a CSV table in this one "
+            + "process instead of REF EST: columns ref and est (paths relative to the table's folder), optional name "
+            + "(the report's file name), columns named as settings (alignment, max_diff_s, ...) for that row; other "
+            + "columns are copied to the summary. Needs --reports.")
+    Path batch;
+
+    @Option(names = "--reports", paramLabel = "DIR", description = "--batch: folder for one report per pair (NAME.json, "
+            + "or line-NNNN.json) and summary.csv (the column names of a suite's runs.csv).")
+    Path reports;
+
     @Override
     public Integer call() {
         List<SettingText> given = new ArrayList<>(SettingOptions.given(spec.commandLine().getParseResult()));
+        if (batch != null) {
+            if (reference != null || estimate != null || out != null || json || plots.wanted()) {
+                throw UsageProblem.of("--batch", "--batch reads the pairs from its table: give no REF EST, --out, "
+                        + "--json or plot options with it", null);
+            }
+            return EvalBatch.run(batch, reports, SettingValues.of(given, null), limits(), threads,
+                    spec.commandLine().getOut(), spec.commandLine().getErr());
+        }
+        if (reference == null) {
+            throw UsageProblem.of("REF", "REF is missing: give a reference and an estimate file (or --batch PAIRS.csv)",
+                    null);
+        }
         reference = bagTopic(reference, Setting.REF_TOPIC, "REF", given);
         if (estimate == null) {
             boolean oneBag = Bags.kind(reference) != null && given.stream().anyMatch(t -> t.key().equals(
@@ -106,11 +129,7 @@ public final class EvalCommand implements Callable<Integer> {
             OutputGuard.refuseFolderOfInputs(plots.seriesDir, "--save-series", inputs);
         }
         MemoryBudget.check(reference, estimate, Runtime.getRuntime().maxMemory());
-        ReadOptions limits = ReadOptions.defaults();
-        if (maxPoses != null || maxBytes != null) {
-            limits = limits.withLimits(maxBytes != null ? maxBytes : limits.maxBytes(),
-                    maxPoses != null ? maxPoses : limits.maxPoses());
-        }
+        ReadOptions limits = limits();
         EvaluationReport report;
         List<String> notices;
         try (EvalThreads work = new EvalThreads(threads)) {
@@ -146,6 +165,15 @@ public final class EvalCommand implements Callable<Integer> {
         }
         o.flush();
         return ExitCodes.OK;
+    }
+
+    private ReadOptions limits() {
+        ReadOptions limits = ReadOptions.defaults();
+        if (maxPoses != null || maxBytes != null) {
+            limits = limits.withLimits(maxBytes != null ? maxBytes : limits.maxBytes(),
+                    maxPoses != null ? maxPoses : limits.maxPoses());
+        }
+        return limits;
     }
 
     /**
