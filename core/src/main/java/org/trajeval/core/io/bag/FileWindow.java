@@ -87,8 +87,9 @@ final class FileWindow implements AutoCloseable {
         if (offset < 0 || length < 0 || length > size - offset) {
             throw BagProblems.length(source, offset, what, length, size - Math.max(0, offset));
         }
-        if (block == null) {
-            block = ByteBuffer.allocateDirect(1 << 20);
+        int want = (int) Math.max(4096, Math.min(1 << 20, length)); // at most 1 MiB; a small file, a small buffer
+        if (block == null || block.capacity() < want) {
+            block = ByteBuffer.allocateDirect(want);
         }
         long at = offset;
         long end = offset + length;
