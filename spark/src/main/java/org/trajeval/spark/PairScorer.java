@@ -37,19 +37,25 @@ final class PairScorer implements MapPartitionsFunction<Row, Row>, Serializable 
     private static final long serialVersionUID = 1L;
 
     private final PairColumns columns;
-    private final ArrayList<SettingText> jobSettings;
+    /** The job's settings as (key, text, where) triples: SettingText is not Serializable. */
+    private final String[][] jobSettings;
     private final PairFiles files;
 
     PairScorer(PairColumns columns, List<SettingText> jobSettings, PairFiles files) {
         this.columns = columns;
-        this.jobSettings = new ArrayList<>(jobSettings);
+        this.jobSettings = jobSettings.stream().map(t -> new String[] {t.key(), t.text(), t.where()})
+                .toArray(String[][]::new);
         this.files = files;
     }
 
     @Override
     public Iterator<Row> call(Iterator<Row> rows) {
         // the job's settings were checked on the driver; checked once more here per partition
-        SettingValues job = SettingValues.of(jobSettings, TrajevalSpark.SETTINGS_SOURCE);
+        List<SettingText> given = new ArrayList<>();
+        for (String[] t : jobSettings) {
+            given.add(new SettingText(t[0], t[1], t[2]));
+        }
+        SettingValues job = SettingValues.of(given, TrajevalSpark.SETTINGS_SOURCE);
         return new Iterator<>() {
             @Override
             public boolean hasNext() {
