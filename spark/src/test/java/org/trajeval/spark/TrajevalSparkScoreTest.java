@@ -22,7 +22,10 @@ import org.apache.spark.sql.types.DataTypes;
 import org.apache.spark.sql.types.StructType;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.MethodOrderer;
+import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.TestMethodOrder;
 import org.junit.jupiter.api.io.TempDir;
 import org.trajeval.cli.TrajevalCommand;
 import org.trajeval.core.InputException;
@@ -38,6 +41,7 @@ import picocli.CommandLine;
  * KITTI 00, and fr1_xyz read as planar) every result equals what trajeval eval prints for the same
  * pair and settings, byte for byte; bad pairs are failed rows with eval's message.
  */
+@TestMethodOrder(MethodOrderer.OrderAnnotation.class)
 class TrajevalSparkScoreTest {
     private static SparkSession spark;
 
@@ -148,6 +152,52 @@ class TrajevalSparkScoreTest {
         InputException s = assertThrows(InputException.class,
                 () -> TrajevalSpark.score(ok, Map.of("alignment", "banana")));
         assertEquals("alignment", s.column());
+    }
+
+    @Test
+    @Order(Integer.MAX_VALUE) // the job stops the session when done: last
+    void theScoreJobWritesOneRowPerPairWithEvalsReportAndRefusesBadUsageWithExit2() throws Exception {
+        Path csv = tmp.resolve("job-pairs.csv");
+        String ref = data("freiburg1_xyz-groundtruth.txt");
+        String est = data("freiburg1_xyz-rgbdslam_drift.txt");
+        Files.writeString(csv, "ref,est,robot\n" + ref + "," + est + ",r1\n" + ref + "," + tmp.resolve("gone.txt")
+                + ",\"r2, with a comma\"\n");
+        Path outDir = tmp.resolve("job-out");
+        StringWriter err = new StringWriter();
+        CommandLine bad = SparkJob.commandLine();
+        bad.setErr(new PrintWriter(err));
+        assertEquals(SparkJob.BAD_INPUT, bad.execute("score", "--pairs", csv.toString(), "--out", outDir.toString(),
+                "--no-such-option"));
+        assertTrue(err.toString().startsWith("trajeval-spark: "), err.toString());
+
+        CommandLine job = SparkJob.commandLine();
+        StringWriter out = new StringWriter();
+        job.setOut(new PrintWriter(out));
+        int exit = job.execute("score", "--pairs", csv.toString(), "--out", outDir.toString(), "--format", "json",
+                "--master", "local[2]", "--convention", "evo", "--align", "se3");
+        assertEquals(SparkJob.OK, exit);
+        assertTrue(out.toString().startsWith("scored 2 pairs (1 ok, 1 failed)"), out.toString());
+        com.fasterxml.jackson.databind.ObjectMapper m = new com.fasterxml.jackson.databind.ObjectMapper();
+        Map<String, com.fasterxml.jackson.databind.JsonNode> rows = new HashMap<>();
+        try (var files = Files.list(outDir)) {
+            for (Path f : files.filter(p -> p.toString().endsWith(".json")).toList()) {
+                for (String line : Files.readAllLines(f)) {
+                    com.fasterxml.jackson.databind.JsonNode n = m.readTree(line);
+                    rows.put(n.get("robot").asText(), n);
+                }
+            }
+        }
+        assertEquals(2, rows.size());
+        Eval eval = eval(RowFactory.create(ref, est, "r1", "evo", "se3", null));
+        assertEquals(eval.out, rows.get("r1").get(ResultSchema.REPORT).asText() + "\n");
+        assertEquals(ResultSchema.FAILED, rows.get("r2, with a comma").get(ResultSchema.STATUS).asText());
+
+        StringWriter again = new StringWriter();
+        CommandLine exists = SparkJob.commandLine();
+        exists.setErr(new PrintWriter(again));
+        assertEquals(SparkJob.BAD_INPUT, exists.execute("score", "--pairs", csv.toString(), "--out",
+                outDir.toString(), "--master", "local[2]"));
+        assertTrue(again.toString().contains("the output folder exists"), again.toString());
     }
 
     private record Eval(int exit, String out, String err) {
