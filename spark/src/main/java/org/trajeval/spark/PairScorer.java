@@ -1,37 +1,29 @@
 package org.trajeval.spark;
 
 import java.io.Serializable;
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Iterator;
 import java.util.List;
-import java.util.Locale;
+import java.util.Map;
 import org.apache.spark.api.java.function.MapPartitionsFunction;
 import org.apache.spark.sql.Row;
 import org.apache.spark.sql.RowFactory;
-import org.trajeval.core.InputException;
-import org.trajeval.core.eval.EvaluationOptions;
-import org.trajeval.core.eval.Evaluator;
-import org.trajeval.core.io.LoadedTrajectory;
+import org.trajeval.core.batch.BatchPair;
+import org.trajeval.core.batch.BatchResult;
+import org.trajeval.core.batch.BatchRunner;
 import org.trajeval.core.io.ReadOptions;
-import org.trajeval.core.io.TrajectoryReader;
-import org.trajeval.core.options.DataKind;
-import org.trajeval.core.options.FileRole;
-import org.trajeval.core.options.FormatApplicability;
 import org.trajeval.core.options.PathResolver;
 import org.trajeval.core.options.SettingText;
 import org.trajeval.core.options.SettingValues;
-import org.trajeval.core.options.SettingsResolver;
 import org.trajeval.core.protocol.RunMetric;
 import org.trajeval.core.report.EvaluationReport;
 import org.trajeval.core.report.ReportJson;
 
 /**
  * Scores the pairs of one partition, one output row per input row: the input's values, then the
- * {@link ResultSchema#RESULT} columns. The same steps as {@code trajeval eval}: both files read
- * with the settings' read options, the settings checked against the formats read, the
- * convention's preset resolved for the data kind, then the evaluation (on the task's thread).
- * A pair that cannot be scored is a {@code failed} row, never a failed task.
+ * {@link ResultSchema#RESULT} columns. Each row is core's batch step ({@link BatchRunner#evaluate},
+ * the steps of {@code trajeval eval} and {@code eval --batch}) on the task's thread; a pair that
+ * cannot be scored is a {@code failed} row ({@link BatchRunner#failed}), never a failed task.
  */
 final class PairScorer implements MapPartitionsFunction<Row, Row>, Serializable {
     private static final long serialVersionUID = 1L;
@@ -76,53 +68,36 @@ final class PairScorer implements MapPartitionsFunction<Row, Row>, Serializable 
         }
         int at = in.size();
         out[at] = ResultSchema.VERSION;
+        BatchPair pair = null;
         try {
-            EvaluationReport r = evaluate(in, job);
-            out[at + 1] = ResultSchema.OK;
-            fill(out, at + 4, r);
-        } catch (InputException e) {
-            out[at + 1] = ResultSchema.FAILED;
-            out[at + 2] = e.problem().name().toLowerCase(Locale.ROOT);
-            out[at + 3] = e.getMessage();
-        } catch (java.io.UncheckedIOException e) {
-            // a file that cannot be read (as trajeval eval: bad input)
-            out[at + 1] = ResultSchema.FAILED;
-            out[at + 2] = "unreadable";
-            out[at + 3] = e.getMessage();
+            String est = columns.est(in);
+            pair = new BatchPair(0, null, files.resolve(columns.ref(in), PairColumns.REF).toString(),
+                    files.resolve(est, PairColumns.EST).toString(), columns.settings(in), Map.of());
+            EvaluationReport r = BatchRunner.evaluate(pair, job, "pair " + est, ReadOptions.defaults(),
+                    PathResolver.asWritten());
+            BatchResult row = BatchResult.scored(pair, r, null);
+            out[at + 1] = row.status();
+            fill(out, at + 4, row, r);
         } catch (RuntimeException e) {
-            // the per-pair boundary: a bug scoring one pair fails that row, not the job
-            out[at + 1] = ResultSchema.FAILED;
-            out[at + 2] = ResultSchema.INTERNAL;
-            out[at + 3] = "internal error: " + e;
+            // the per-pair boundary (core's batch rule): bad input or a bug fails this row, not the job
+            BatchResult row = BatchRunner.failed(pair != null ? pair : new BatchPair(0, null, "", "", List.of(),
+                    Map.of()), e);
+            out[at + 1] = row.status();
+            out[at + 2] = row.failureReason();
+            out[at + 3] = row.failureDetail();
         }
         return RowFactory.create(out);
     }
 
-    private EvaluationReport evaluate(Row in, SettingValues job) {
-        String refText = columns.ref(in);
-        String estText = columns.est(in);
-        List<SettingText> own = columns.settings(in);
-        SettingValues s = own.isEmpty() ? job : job.with(own, "pair " + estText);
-        Path ref = files.resolve(refText, PairColumns.REF);
-        Path est = files.resolve(estText, PairColumns.EST);
-        LoadedTrajectory r = TrajectoryReader.read(ref, SettingsResolver.readOptions(s, FileRole.REFERENCE,
-                ReadOptions.defaults(), PathResolver.asWritten()));
-        LoadedTrajectory e = TrajectoryReader.read(est, SettingsResolver.readOptions(s, FileRole.ESTIMATE,
-                ReadOptions.defaults(), PathResolver.asWritten()));
-        FormatApplicability.check(s, r, ref.toString(), e, est.toString());
-        EvaluationOptions o = SettingsResolver.evaluationOptions(s, DataKind.of(r.trajectory(), e.trajectory()));
-        return Evaluator.evaluate(r, e, o);
-    }
-
-    /** Writes the statistic columns from {@code r}, starting at {@code at} (the first RunMetric). */
-    private static void fill(Object[] out, int at, EvaluationReport r) {
+    /** Writes the statistic columns of a scored row, starting at {@code at} (the first RunMetric). */
+    private static void fill(Object[] out, int at, BatchResult row, EvaluationReport r) {
         int i = at;
         for (RunMetric m : RunMetric.values()) {
-            double v = m.of(r);
+            double v = row.metric(m);
             out[i++] = Double.isNaN(v) ? null : v;
         }
         out[i++] = r.ate() == null ? null : r.ate().transM().max();
-        out[i++] = r.coverage() == null ? null : r.coverage().fraction();
+        out[i++] = Double.isNaN(row.coverage()) ? null : row.coverage();
         out[i++] = r.association() == null ? null : r.association().matched();
         out[i++] = r.association() == null ? null : r.association().dropped();
         out[i++] = r.association() == null ? null : r.association().droppedReference();

@@ -15,10 +15,12 @@ import org.trajeval.core.protocol.RunMetric;
  * <ul>
  *   <li>{@code result_schema_version} (int): {@value #VERSION};
  *   <li>{@code status} (string): {@code ok} or {@code failed};
- *   <li>{@code error_kind} (string): for a failed pair, the problem of the refusal in lower case
- *       ({@code unreadable}, {@code not_a_number}, {@code invalid_configuration}, {@code no_overlap},
- *       ...) or {@code internal} (a bug: report it); null when ok;
- *   <li>{@code error} (string): the one-line message {@code trajeval eval} prints for that pair;
+ *   <li>{@code failure_reason} (string): for a failed pair, the problem of the refusal in lower
+ *       case ({@code unreadable}, {@code not_a_number}, {@code invalid_configuration},
+ *       {@code no_overlap}, ...) or {@code internal_error} (a bug: report it); null when ok;
+ *   <li>{@code failure_detail} (string): the one-line message {@code trajeval eval} prints for that
+ *       pair; (status and the two failure columns as in a suite's {@code runs.csv} and
+ *       {@code eval --batch}'s {@code summary.csv});
  *   <li>one double per statistic, named as the suite's {@code runs.csv} ({@link RunMetric} keys:
  *       {@code ate_trans_rmse_m}, {@code ate_trans_mean_m}, {@code ate_rot_rmse_rad},
  *       {@code rpe_trans_rmse_m}, {@code rpe_rot_rmse_rad}, {@code drift_trans_pct}), null when the
@@ -37,8 +39,8 @@ public final class ResultSchema {
 
     public static final String RESULT_SCHEMA_VERSION = "result_schema_version";
     public static final String STATUS = "status";
-    public static final String ERROR_KIND = "error_kind";
-    public static final String ERROR = "error";
+    public static final String FAILURE_REASON = "failure_reason";
+    public static final String FAILURE_DETAIL = "failure_detail";
     public static final String ATE_TRANS_MAX_M = "ate_trans_max_m";
     public static final String COVERAGE = "coverage";
     public static final String MATCHED = "matched";
@@ -51,11 +53,9 @@ public final class ResultSchema {
     public static final String REPORT = "report";
 
     /** {@code status} of a scored pair. */
-    public static final String OK = "ok";
+    public static final String OK = org.trajeval.core.batch.BatchResult.OK;
     /** {@code status} of a pair that could not be scored. */
-    public static final String FAILED = "failed";
-    /** {@code error_kind} of anything but bad input. */
-    public static final String INTERNAL = "internal";
+    public static final String FAILED = org.trajeval.core.batch.BatchResult.FAILED;
 
     /** The result columns, in order. */
     public static final StructType RESULT = build();
@@ -76,8 +76,8 @@ public final class ResultSchema {
         List<StructField> f = new ArrayList<>();
         f.add(DataTypes.createStructField(RESULT_SCHEMA_VERSION, DataTypes.IntegerType, false));
         f.add(DataTypes.createStructField(STATUS, DataTypes.StringType, false));
-        f.add(DataTypes.createStructField(ERROR_KIND, DataTypes.StringType, true));
-        f.add(DataTypes.createStructField(ERROR, DataTypes.StringType, true));
+        f.add(DataTypes.createStructField(FAILURE_REASON, DataTypes.StringType, true));
+        f.add(DataTypes.createStructField(FAILURE_DETAIL, DataTypes.StringType, true));
         for (RunMetric m : RunMetric.values()) {
             f.add(DataTypes.createStructField(m.key(), DataTypes.DoubleType, true));
         }

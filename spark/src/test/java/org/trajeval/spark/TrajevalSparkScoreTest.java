@@ -103,7 +103,7 @@ class TrajevalSparkScoreTest {
             Row r = byRobot.get(in.getString(2));
             Eval eval = eval(in);
             if (eval.exit == 0) {
-                assertEquals(ResultSchema.OK, r.getAs(ResultSchema.STATUS), in.getString(2) + ": " + r.getAs("error"));
+                assertEquals(ResultSchema.OK, r.getAs(ResultSchema.STATUS), in.getString(2) + ": " + r.getAs(ResultSchema.FAILURE_DETAIL));
                 assertEquals(eval.out, r.<String>getAs(ResultSchema.REPORT) + "\n", in.getString(2)
                         + ": the report equals trajeval eval --json byte for byte");
                 EvaluationReport rep = ReportJson.parseEvaluation(eval.out);
@@ -125,14 +125,14 @@ class TrajevalSparkScoreTest {
                 assertNull(r.getAs(RunMetric.ATE_TRANS_RMSE_M.key()));
             }
         }
-        assertEquals("unreadable", byRobot.get("missing").getAs(ResultSchema.ERROR_KIND));
-        assertEquals(firstLine(eval(rows.get(6)).err), "trajeval: " + byRobot.get("missing").getAs(ResultSchema.ERROR),
+        assertEquals("unreadable", byRobot.get("missing").getAs(ResultSchema.FAILURE_REASON));
+        assertEquals(firstLine(eval(rows.get(6)).err), "trajeval: " + byRobot.get("missing").getAs(ResultSchema.FAILURE_DETAIL),
                 "a missing file: eval's message");
-        assertEquals(firstLine(eval(rows.get(7)).err), "trajeval: " + byRobot.get("garbage").getAs(ResultSchema.ERROR),
+        assertEquals(firstLine(eval(rows.get(7)).err), "trajeval: " + byRobot.get("garbage").getAs(ResultSchema.FAILURE_DETAIL),
                 "a garbage file: eval's message");
         Row bad = byRobot.get("bad-option");
-        assertEquals("invalid_configuration", bad.getAs(ResultSchema.ERROR_KIND));
-        String msg = bad.getAs(ResultSchema.ERROR);
+        assertEquals("invalid_configuration", bad.getAs(ResultSchema.FAILURE_REASON));
+        String msg = bad.getAs(ResultSchema.FAILURE_DETAIL);
         assertTrue(msg.contains("column alignment") && msg.contains("banana"), msg);
         // passthrough: the input's columns come back unchanged, in front
         Row kitti = byRobot.get("kitti");
