@@ -21,10 +21,12 @@ import org.trajeval.core.stats.SampleSummary;
  *   L_sim    = mean of m_s over the sim sequences with a value,  L_real likewise over the real ones
  *   Delta    = L_real - L_sim                                      (unit of the metric)
  * </pre>
- * Interval: a seeded percentile bootstrap. When every sim and real sequence belongs to a scenario that
- * has both (and there are at least two such scenarios), whole scenarios are resampled, so a scenario's
- * sim and real sequences stay together (paired); otherwise each domain's sequences are resampled on
- * their own. The same resamples serve every method, so the difference of two methods' gaps has an
+ * Interval: a seeded percentile bootstrap, stratified. With at least two scenarios that have both a sim
+ * and a real sequence, those scenarios are one stratum resampled whole, so a scenario's sim and real
+ * sequences stay together (paired: {@code paired_over_scenarios} when that is every sequence,
+ * {@code partly_paired} otherwise); the other sim sequences and the other real sequences are two
+ * more strata resampled one by one ({@code independent_domains} when nothing is paired). The same
+ * resamples serve every method, so the difference of two methods' gaps has an
  * interval too. Rankings per domain sort L (1 = best, ties mid-ranked); Kendall's tau_b compares them.
  * A pair of methods flips when their order in sim is the reverse of their order in real; the flip is
  * supported when the paired comparison over each domain's sequences (the suite's own rules, see
@@ -33,6 +35,8 @@ import org.trajeval.core.stats.SampleSummary;
 public final class DomainGap {
     /** Interval method: scenarios resampled whole. */
     public static final String PAIRED = "paired_over_scenarios";
+    /** Interval method: scenarios with both domains resampled whole, the other sequences within their domain. */
+    public static final String PARTLY = "partly_paired";
     /** Interval method: each domain's sequences resampled on their own. */
     public static final String INDEPENDENT = "independent_domains";
 
@@ -77,22 +81,42 @@ public final class DomainGap {
             }
         });
         everyOnePaired &= paired.size() == sides.size();
-        boolean usePaired = everyOnePaired && paired.size() >= 2;
+        boolean usePaired = paired.size() >= 2;
         String reason;
-        int[][][] strata;
+        List<int[][]> strata = new ArrayList<>();
+        List<String> simAlone = new ArrayList<>(sim);
+        List<String> realAlone = new ArrayList<>(real);
+        String method;
         if (usePaired) {
+            strata.add(paired.stream().map(c -> byScenario.get(c).stream().mapToInt(Integer::intValue).toArray())
+                    .toArray(int[][]::new));
+            for (String c : paired) {
+                for (int i : byScenario.get(c)) {
+                    simAlone.remove(ids.get(i));
+                    realAlone.remove(ids.get(i));
+                }
+            }
+        }
+        if (usePaired && everyOnePaired) {
+            method = PAIRED;
             reason = "every sim and real sequence belongs to one of " + paired.size()
                     + " scenarios with both domains: scenarios are resampled whole";
-            strata = new int[][][] {paired.stream().map(c -> byScenario.get(c).stream().mapToInt(Integer::intValue)
-                    .toArray()).toArray(int[][]::new)};
+        } else if (usePaired) {
+            method = PARTLY;
+            reason = paired.size() + " scenarios with both domains are resampled whole; the other " + simAlone.size()
+                    + " sim and " + realAlone.size() + " real sequences within their domain";
         } else {
-            reason = paired.size() < 2 && everyOnePaired ? "fewer than 2 scenarios with both domains"
-                    : "some sim or real sequences have no scenario with both domains";
-            reason += ": each domain's sequences are resampled on their own";
-            strata = new int[][][] {singletons(ids, sim), singletons(ids, real)};
+            method = INDEPENDENT;
+            reason = "fewer than 2 scenarios with both domains: each domain's sequences are resampled on their own";
         }
-        int[][] plans = ClusterBootstrap.plans(ids.size(), strata, stats.resamples(), stats.seed() * 1_000_003L
-                + 0x5eed);
+        if (!simAlone.isEmpty()) {
+            strata.add(singletons(ids, simAlone));
+        }
+        if (!realAlone.isEmpty()) {
+            strata.add(singletons(ids, realAlone));
+        }
+        int[][] plans = ClusterBootstrap.plans(ids.size(), strata.toArray(new int[0][][]), stats.resamples(),
+                stats.seed() * 1_000_003L + 0x5eed);
         boolean[] isSim = new boolean[ids.size()];
         boolean[] isReal = new boolean[ids.size()];
         for (int i = 0; i < ids.size(); i++) {
@@ -166,7 +190,7 @@ public final class DomainGap {
             out.add(new DomainGapReport.MetricGap(key, higher ? "higher" : "lower", gaps,
                     SuiteAnalysis.nullable(tau), flips));
         }
-        return new DomainGapReport(sim, real, paired, usePaired ? PAIRED : INDEPENDENT, reason, stats.level(),
+        return new DomainGapReport(sim, real, usePaired ? paired : List.of(), method, reason, stats.level(),
                 stats.resamples(), out);
     }
 

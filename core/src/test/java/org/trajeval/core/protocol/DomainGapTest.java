@@ -79,6 +79,23 @@ class DomainGapTest {
     }
 
     @Test
+    void anUnpairedSimSequenceIsResampledWithinItsDomainBesideTheScenarios() {
+        List<SequenceSpec> seqs = new ArrayList<>(twoScenarios(true));
+        seqs.add(seq("x_sim", "sim", null, Map.of()));
+        List<RunEntry> runs = new ArrayList<>(twoScenarioRuns());
+        runs.add(ok("A", "x_sim", 1, 0.2));
+        runs.add(ok("B", "x_sim", 1, 0.5));
+        DomainGapReport g = DomainGap.compute(seqs, byMethod(runs), ATE, STATS);
+        assertEquals(DomainGap.PARTLY, g.intervalMethod());
+        // by hand: L_sim(A) = (0.1 + 0.3 + 0.2) / 3 = 0.2, unchanged; gap still 0.8, but the lone sim sequence
+        // now varies it: a resample drawing c1 twice gives L_sim = (0.1 + 0.1 + 0.2) / 3, gap 0.9 - 0.1333 = 0.7667
+        DomainGapReport.MethodGap a = g.metrics().get(0).methods().get(0);
+        assertEquals(0.8, a.gap(), TOL);
+        assertEquals(3, a.nSim());
+        assertTrue(a.gapInterval().lower() <= 0.8 && a.gapInterval().upper() >= 0.8);
+    }
+
+    @Test
     void aFlipFoundOnSixScenariosOnBothSidesIsSupported() {
         List<SequenceSpec> seqs = new ArrayList<>();
         List<RunEntry> runs = new ArrayList<>();
