@@ -12,13 +12,12 @@ import java.util.Map;
 import java.util.Random;
 import java.util.function.Supplier;
 import org.trajeval.core.protocol.RegressionGate;
-import org.trajeval.core.report.SuiteReport.RunEntry;
 
 /**
  * The README's store figures: {@code gradle :store:measure [-Pargs="RUNS sqlite|postgresql"]}.
  * Fills a fresh store with RUNS synthetic run results (50 robots, 5 sites, 20 routes, 3 methods,
  * 10 software versions over 100 days, seeds 1-5; one tag each), then times the trend queries and
- * the gate (both sides' selection and the paired statistics): 7 repetitions, median and max.
+ * the gate (pairing and per-sequence sums in SQL, then the paired statistics): 7 repetitions, median and max.
  */
 public final class StoreMeasure {
     private StoreMeasure() {
@@ -70,7 +69,7 @@ public final class StoreMeasure {
             time("trend ate by robot per day, site=site-3, last 14 days", () -> Trend.of(s, "ate_trans_rmse_m",
                     "robot", TrendBucket.DAY, Selection.parse("site=site-3", "x"), start + span - 14 * 86_400_000L,
                     0.95).slices().size());
-            time("gate v8 vs v9 (select both sides + paired statistics)", () -> gate(s, "v8", "v9"));
+            time("gate v8 vs v9 (paired in SQL + paired statistics)", () -> gate(s, "v8", "v9"));
             time("gate v8 vs v9 on robot bot-7 only", () -> gate(s, "v8,robot=bot-7", "v9,robot=bot-7"));
         } finally {
             if (pg != null) {
@@ -83,20 +82,10 @@ public final class StoreMeasure {
     }
 
     private static int gate(ResultsStore s, String base, String cand) {
-        List<RunEntry> b = entries(s.select(Selection.parse("software_version=" + base, "b"), false));
-        List<RunEntry> c = entries(s.select(Selection.parse("software_version=" + cand, "c"), false));
-        List<String> seqs = b.stream().map(RunEntry::sequence).distinct().sorted().toList();
-        return RegressionGate.gateAll(b, c, List.of("m0", "m1", "m2"), seqs,
+        return StoredGate.gate(s, Selection.parse("software_version=" + base, "b"),
+                Selection.parse("software_version=" + cand, "c"), GatePairing.ROUTE_SEED,
                 Map.of("ate_trans_rmse_m", 0.05, "rpe_trans_rmse_m", 0.05),
-                new RegressionGate.Settings(0.95, 1, 4000)).size();
-    }
-
-    private static List<RunEntry> entries(List<RunRecord> rs) {
-        List<RunEntry> out = new ArrayList<>(rs.size());
-        for (RunRecord r : rs) {
-            out.add(new RunEntry(r.method(), r.route(), r.seed(), "test", null, "ok", null, null, r.metrics(), 0, null));
-        }
-        return out;
+                new RegressionGate.Settings(0.95, 1, 4000)).findings().size();
     }
 
     private static void time(String what, Supplier<Integer> q) {

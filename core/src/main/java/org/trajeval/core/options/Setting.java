@@ -105,7 +105,10 @@ public enum Setting {
     DRIFT_SEGMENT_LENGTHS_M("drift_segment_lengths_m", "--drift-lengths", SettingKind.NUMBERS,
             SettingScope.EVALUATION, "M,M,...", "m", "all", "Drift segment lengths (m; default 100,200,...,800)."),
     DRIFT_STEP_FRAMES("drift_step_frames", "--drift-step", SettingKind.INTEGER, SettingScope.EVALUATION, "FRAMES",
-            "frames", "all", "Frames between drift segment starts (>= 1; default 10).");
+            "frames", "all", "Frames between drift segment starts (>= 1; default 10)."),
+    SUBTRAJ_LENGTHS_M("subtraj_lengths_m", "--subtraj-lengths", SettingKind.NUMBERS, SettingScope.EVALUATION,
+            "M,M,...", "m", "all", "Sub-trajectory lengths of the relative errors per length that plots draw and "
+            + "saved series keep (m; default 10,20,30,40,50 % of the reference path; KITTI's segment rule).");
 
     private static final Pattern DECIMAL = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d{1,3})?");
     private static final Pattern WHOLE = Pattern.compile("[+-]?\\d{1,18}");

@@ -184,6 +184,14 @@ public final class SettingsResolver {
         return o.withDrift(new DriftOptions(lengths, step));
     }
 
+    /**
+     * @return the lengths of the relative errors per sub-trajectory length (m), or null for the
+     *     default (10 ... 50 % of the reference path, {@code SubTrajectoryErrors})
+     */
+    public static double[] subTrajectoryLengthsM(SettingValues s) {
+        return s.has(Setting.SUBTRAJ_LENGTHS_M) ? ((double[]) s.get(Setting.SUBTRAJ_LENGTHS_M)).clone() : null;
+    }
+
     private static String upper(Setting setting, SettingValues s) {
         return ((String) s.get(setting)).toUpperCase(Locale.ROOT).replace('-', '_');
     }

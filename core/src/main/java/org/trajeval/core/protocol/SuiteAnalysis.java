@@ -200,6 +200,23 @@ public final class SuiteAnalysis {
                 pairs.add(new Paired(s, ma, mb, ma - mb));
             }
         }
+        return compare(methodA, methodB, key, pairs, settings, stream);
+    }
+
+    /**
+     * Paired comparison from per-sequence means already formed (e.g. aggregated in a database):
+     * the same statistics as {@link #compare(String, List, String, List, List, String, Settings, int)}
+     * over d_s = a_s - b_s, in the order given (the bootstrap resamples by index).
+     *
+     * @param methodA label of method A
+     * @param methodB label of method B
+     * @param key metric key, or {@link #SCORE}
+     * @param pairs per sequence: a = A's mean, b = B's mean, difference = a - b
+     * @param settings statistics settings
+     * @param stream index of this comparison, mixed into the bootstrap seed
+     */
+    public static Comparison compare(String methodA, String methodB, String key, List<Paired> pairs,
+            Settings settings, int stream) {
         int n = pairs.size();
         double[] d = pairs.stream().mapToDouble(Paired::difference).toArray();
         Double mean = n == 0 ? null : SampleSummary.of(d).mean();

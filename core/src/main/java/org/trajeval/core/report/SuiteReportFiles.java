@@ -209,21 +209,10 @@ public final class SuiteReportFiles {
     }
 
     private static String num(Double v) {
-        return v == null || !Double.isFinite(v) ? "" : Double.toString(v);
+        return CsvText.number(v);
     }
 
     private static void row(StringBuilder sb, List<String> fields) {
-        for (int i = 0; i < fields.size(); i++) {
-            if (i > 0) {
-                sb.append(',');
-            }
-            String f = fields.get(i) == null ? "" : fields.get(i);
-            if (f.indexOf(',') >= 0 || f.indexOf('"') >= 0 || f.indexOf('\n') >= 0) {
-                sb.append('"').append(f.replace("\"", "\"\"")).append('"');
-            } else {
-                sb.append(f);
-            }
-        }
-        sb.append('\n');
+        CsvText.row(sb, fields);
     }
 }

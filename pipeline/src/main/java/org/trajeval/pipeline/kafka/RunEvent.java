@@ -31,7 +31,7 @@ import org.trajeval.pipeline.RunMetadata;
  */
 public record RunEvent(RunMetadata metadata, String bundle, Inline reference, Inline estimate, SettingValues settings) {
     private static final ObjectMapper JSON = org.trajeval.core.io.StrictMappers.json();
-    private static final Set<String> KEYS = Set.of("run_id", "robot_id", "sequence", "method", "seed", "bundle",
+    private static final Set<String> KEYS = RunFields.keysWith("bundle",
             "reference", "estimate", "metrics");
     private static final Pattern FILE_NAME = Pattern.compile("[A-Za-z0-9_-][A-Za-z0-9._-]{0,100}");
 
