@@ -72,8 +72,8 @@ final class SimRealOutput {
             for (FactorSweep.MethodSweep m : s.methods()) {
                 for (FactorSweep.Level l : m.levels()) {
                     SuiteReport.Proportion p = l.failureRate();
-                    String rate = p == null ? "-" : num(p.estimate()) + " " + String.format(Locale.ROOT, "[%s, %s]",
-                            num(p.wilson().lower()), num(p.wilson().upper()));
+                    String rate = p == null ? "-" : String.format(Locale.ROOT, "%.3f [%.3f, %.3f]", p.estimate(),
+                            p.wilson().lower(), p.wilson().upper());
                     FactorSweep.LevelMetric lm = l.metrics().get(0);
                     out.printf(Locale.ROOT, "%-12s %8s %5d %-26s %-34s%n", m.method(), num(l.level()), l.runs(), rate,
                             lm.median() == null ? "-" : num(lm.median()) + " [" + num(lm.lower()) + ", "
