@@ -18,13 +18,15 @@ import org.trajeval.core.InputProblem;
  * read and evaluation options; a new setting is a constant here and a line there.
  */
 public enum Setting {
-    FORMAT("format", "--format", SettingKind.CHOICE, SettingScope.READ_BOTH, "auto|csv|tum|kitti|euroc", "",
+    FORMAT("format", "--format", SettingKind.CHOICE, SettingScope.READ_BOTH,
+            "auto|csv|tum|kitti|euroc|nclt|robotcar-ins|robotcar-vo|icl-nuim", "",
             "all", "Format of both files (default auto: detected from extension and content; the report says what "
-            + "was chosen and why)."),
+            + "was chosen and why). nclt, robotcar-ins, robotcar-vo and icl-nuim read those datasets' own files "
+            + "(README, \"Datasets\")."),
     REF_FORMAT("ref_format", "--ref-format", SettingKind.CHOICE, SettingScope.READ_REFERENCE,
-            "auto|csv|tum|kitti|euroc", "", "all", "Format of the reference when the two differ."),
+            "auto|csv|tum|kitti|euroc|nclt|robotcar-ins|robotcar-vo|icl-nuim", "", "all", "Format of the reference when the two differ."),
     EST_FORMAT("est_format", "--est-format", SettingKind.CHOICE, SettingScope.READ_ESTIMATE,
-            "auto|csv|tum|kitti|euroc", "", "all", "Format of the estimate when the two differ."),
+            "auto|csv|tum|kitti|euroc|nclt|robotcar-ins|robotcar-vo|icl-nuim", "", "all", "Format of the estimate when the two differ."),
     TIME_UNIT("time_unit", "--time-unit", SettingKind.CHOICE, SettingScope.READ_BOTH, "s|ms|us|ns", "",
             "csv", "Unit of CSV timestamps (default s)."),
     COLUMNS("columns", "--columns", SettingKind.TEXT, SettingScope.READ_BOTH, "T,X,Y,YAW", "",

@@ -55,7 +55,7 @@ public final class SettingsResolver {
         Setting ownFormat = role == FileRole.REFERENCE ? Setting.REF_FORMAT : Setting.EST_FORMAT;
         String format = (String) (s.has(ownFormat) ? s.get(ownFormat) : s.get(Setting.FORMAT));
         ReadOptions o = base.withFormat(format == null || format.equals("auto") ? null
-                : TrajectoryFormat.valueOf(format.toUpperCase(Locale.ROOT)));
+                : TrajectoryFormat.valueOf(format.toUpperCase(Locale.ROOT).replace('-', '_')));
         CsvLayout d = base.csv();
         String[] columns = (String[]) s.get(Setting.COLUMNS);
         String delimiter = (String) s.get(Setting.DELIMITER);
