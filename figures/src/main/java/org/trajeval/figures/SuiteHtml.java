@@ -65,6 +65,7 @@ public final class SuiteHtml {
     /** @return every figure of the page: the box plots, then per sequence the trajectories and the error */
     static List<Figure> figures(SuiteReport r, List<SequencePlot> plots) {
         List<Figure> out = new ArrayList<>(SuiteFigures.boxes(r));
+        out.addAll(SweepFigures.of(r));
         for (SequencePlot p : plots) {
             out.add(SuiteFigures.overlay(p, PlotPlane.AUTO));
             out.add(SuiteFigures.errorOverTime(p));
@@ -99,6 +100,7 @@ public final class SuiteHtml {
         comparisons(h, r);
         SuiteStatisticsHtml.rankings(h, r);
         SuiteStatisticsHtml.variance(h, r);
+        SimRealHtml.sections(h, r, svg);
         perSequence(h, r);
         boxes(h, r, svg);
         sequences(h, plots, svg);
@@ -332,7 +334,7 @@ public final class SuiteHtml {
         h.append("</tbody></table>\n");
     }
 
-    private static String img(String svg, String alt) {
+    static String img(String svg, String alt) {
         return "<img src=\"data:image/svg+xml;base64," + Base64.getEncoder().encodeToString(svg.getBytes(
                 StandardCharsets.UTF_8)) + "\" alt=\"" + esc(alt) + "\" width=\"" + FigurePainter.WIDTH
                 + "\" height=\"" + FigurePainter.HEIGHT + "\">";
