@@ -55,7 +55,7 @@ public final class SettingsResolver {
         Setting ownFormat = role == FileRole.REFERENCE ? Setting.REF_FORMAT : Setting.EST_FORMAT;
         String format = (String) (s.has(ownFormat) ? s.get(ownFormat) : s.get(Setting.FORMAT));
         ReadOptions o = base.withFormat(format == null || format.equals("auto") ? null
-                : TrajectoryFormat.valueOf(format.toUpperCase(Locale.ROOT)));
+                : TrajectoryFormat.valueOf(format.toUpperCase(Locale.ROOT).replace('-', '_')));
         CsvLayout d = base.csv();
         String[] columns = (String[]) s.get(Setting.COLUMNS);
         String delimiter = (String) s.get(Setting.DELIMITER);
@@ -184,6 +184,14 @@ public final class SettingsResolver {
                 : base.segmentLengthsM();
         int step = s.has(Setting.DRIFT_STEP_FRAMES) ? (Integer) s.get(Setting.DRIFT_STEP_FRAMES) : base.stepFrames();
         return o.withDrift(new DriftOptions(lengths, step));
+    }
+
+    /**
+     * @return the lengths of the relative errors per sub-trajectory length (m), or null for the
+     *     default (10 ... 50 % of the reference path, {@code SubTrajectoryErrors})
+     */
+    public static double[] subTrajectoryLengthsM(SettingValues s) {
+        return s.has(Setting.SUBTRAJ_LENGTHS_M) ? ((double[]) s.get(Setting.SUBTRAJ_LENGTHS_M)).clone() : null;
     }
 
     private static String upper(Setting setting, SettingValues s) {

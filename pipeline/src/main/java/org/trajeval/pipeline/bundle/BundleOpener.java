@@ -162,7 +162,8 @@ public final class BundleOpener {
         try {
             Path ref = SafePaths.resolveFile(dir, manifest.reference(), manifestName, "reference", limits.maxFileBytes());
             Path est = SafePaths.resolveFile(dir, manifest.estimate(), manifestName, "estimate", limits.maxFileBytes());
-            RunJob job = new RunJob(manifest.metadata(), ref, est, manifest.settings(), source, dir);
+            RunJob job = new RunJob(manifest.metadata(), ref, est, manifest.settings(), source, dir,
+                    manifest.plot());
             CoreRunScorer.readOptions(job, org.trajeval.core.options.FileRole.REFERENCE, limits.maxFileBytes());
             CoreRunScorer.readOptions(job, org.trajeval.core.options.FileRole.ESTIMATE, limits.maxFileBytes());
             return job;

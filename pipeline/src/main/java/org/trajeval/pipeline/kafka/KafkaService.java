@@ -494,7 +494,8 @@ public final class KafkaService {
                             event.metadata().runId());
                     throw new StageException(RunFailure.of(Stage.MANIFEST, e), e);
                 }
-                return new RunJob(job.metadata(), job.reference(), job.estimate(), job.settings(), source, job.folder());
+                return new RunJob(job.metadata(), job.reference(), job.estimate(), job.settings(), source, job.folder(),
+                        job.plot());
             }
             Path ref = writeInline(scratch.resolve("reference"), event.reference(), source, "reference");
             Path est = writeInline(scratch.resolve("estimate"), event.estimate(), source, "estimate");
