@@ -40,7 +40,8 @@ import picocli.CommandLine.Model.CommandSpec;
                 + "in a suite manifest's metrics, a run.yaml and a Kafka run event."},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success", "1:internal error (a bug; rerun with --verbose)",
-            "2:bad input or usage (one line names file, line and what was expected)",
+            "2:bad input or usage (one line names file, line and what was expected); with --db also a store "
+                + "that cannot be opened or written",
             "4:--batch: some pairs could not be scored (failed rows of summary.csv, one stderr line each)"})
 public final class EvalCommand implements Callable<Integer> {
 
@@ -76,6 +77,9 @@ public final class EvalCommand implements Callable<Integer> {
             + "for the element-wise passes of the evaluation; with --batch, pairs scored at once (default: ${DEFAULT-VALUE}; 1 does everything on "
             + "one thread). The numbers do not depend on it.", defaultValue = "2")
     int threads;
+
+    @picocli.CommandLine.Mixin
+    EvalRecording recording = new EvalRecording();
 
     @Option(names = "--verbose", description = "Print stack traces of errors.")
     boolean verbose;
@@ -117,6 +121,7 @@ public final class EvalCommand implements Callable<Integer> {
         }
         estimate = bagTopic(estimate, Setting.EST_TOPIC, "EST", given);
         SettingValues settings = SettingValues.of(given, null);
+        org.trajeval.store.Labels labels = recording.labels();
         List<Path> inputs = Stream.of(reference, estimate, path(settings, Setting.REF_TIMES),
                 path(settings, Setting.EST_TIMES)).filter(Objects::nonNull).toList();
         if (out != null) {
@@ -143,7 +148,8 @@ public final class EvalCommand implements Callable<Integer> {
             FormatApplicability.check(settings, ref, reference.toString(), est, estimate.toString());
             EvaluationOptions options = SettingsResolver.evaluationOptions(settings,
                     DataKind.of(ref.trajectory(), est.trajectory()));
-            report = plots.wanted() ? EvalPlots.write(ref, est, options, plots, spec.commandLine().getErr())
+            report = plots.wanted() ? EvalPlots.write(ref, est, options,
+                    SettingsResolver.subTrajectoryLengthsM(settings), plots, spec.commandLine().getErr())
                     : Evaluator.evaluate(ref, est, options, work.parallelism());
             notices = EvalNotices.of(report, options, (Integer) settings.get(Setting.N_TO_ALIGN));
         }
@@ -153,9 +159,13 @@ public final class EvalCommand implements Callable<Integer> {
         }
         err.flush();
         // JSON (and Jackson's start-up) only when asked for
-        String jsonText = json || out != null ? ReportJson.toJson(report) : null;
+        String jsonText = json || out != null || recording.wanted() ? ReportJson.toJson(report) : null;
         if (out != null) {
             ReportJson.writeAtomically(out, jsonText + "\n");
+        }
+        if (recording.wanted()) {
+            recording.record(jsonText, out != null ? out.toString() : reference + " " + estimate, labels,
+                    java.time.Clock.systemUTC(), err);
         }
         PrintWriter o = spec.commandLine().getOut();
         if (json && out == null) {
