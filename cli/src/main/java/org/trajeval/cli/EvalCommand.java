@@ -133,7 +133,7 @@ public final class EvalCommand implements Callable<Integer> {
         if (plots.seriesDir != null) {
             OutputGuard.refuseFolderOfInputs(plots.seriesDir, "--save-series", inputs);
         }
-        MemoryBudget.check(reference, estimate, Runtime.getRuntime().maxMemory());
+        MemoryBudget.check(reference, estimate, Runtime.getRuntime().maxMemory(), plots.wanted());
         ReadOptions limits = limits();
         EvaluationReport report;
         List<String> notices;

@@ -41,6 +41,19 @@ class MemoryBudgetTest {
     }
 
     @Test
+    void aTumPairIsBudgetedAtTheColumnarEvaluatorsCostUnlessEveryPoseIsKept() throws IOException {
+        StringBuilder sb = new StringBuilder();
+        for (int i = 0; i < 10_000; i++) {
+            sb.append(i * 0.01).append(" 1.000000 2.000000 0.000000 0 0 0 1\n");
+        }
+        Path a = dir.resolve("a.tum");
+        Files.writeString(a, sb);
+        // 20 000 poses: x 240 B = 4.8 MB for the columnar evaluator, x 1200 B = 24 MB with plots
+        assertDoesNotThrow(() -> MemoryBudget.check(a, a, 8L << 20, false));
+        assertThrows(InputException.class, () -> MemoryBudget.check(a, a, 8L << 20, true));
+    }
+
+    @Test
     void pairThatFitsIsAccepted() throws IOException {
         Path a = csv("a.csv", 1000);
         assertDoesNotThrow(() -> MemoryBudget.check(a, a, 64L << 20));
