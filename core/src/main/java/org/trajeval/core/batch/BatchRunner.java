@@ -1,13 +1,9 @@
 package org.trajeval.core.batch;
 
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.Future;
-import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Consumer;
 import org.trajeval.core.InputException;
 import org.trajeval.core.eval.EvaluationOptions;
@@ -107,33 +103,10 @@ public final class BatchRunner {
     public static List<BatchResult> run(List<BatchPair> pairs, SettingValues base, String table, ReadOptions limits,
             PathResolver paths, Path reportDir, Parallelism parallelism, Consumer<BatchResult> done) {
         BatchResult[] out = new BatchResult[pairs.size()];
-        AtomicInteger next = new AtomicInteger();
-        Runnable worker = () -> {
-            for (int k = next.getAndIncrement(); k < out.length; k = next.getAndIncrement()) {
-                out[k] = score(pairs.get(k), base, table, limits, paths, reportDir);
-                done.accept(out[k]);
-            }
-        };
-        int helpers = Math.min(parallelism.threads(), Math.max(out.length, 1)) - 1;
-        List<Future<?>> futures = new ArrayList<>();
-        for (int h = 0; h < helpers; h++) {
-            futures.add(parallelism.executor().submit(worker));
-        }
-        worker.run();
-        for (Future<?> f : futures) {
-            try {
-                f.get();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                throw new IllegalStateException("interrupted while scoring the batch", e);
-            } catch (ExecutionException e) {
-                Throwable cause = e.getCause();
-                if (cause instanceof Error err) {
-                    throw err;
-                }
-                throw cause instanceof RuntimeException re ? re : new IllegalStateException(cause);
-            }
-        }
+        parallelism.forEach(out.length, k -> {
+            out[k] = score(pairs.get(k), base, table, limits, paths, reportDir);
+            done.accept(out[k]);
+        });
         List<BatchResult> rows = Arrays.asList(out);
         ReportJson.writeAtomically(reportDir.resolve(BatchSummary.FILE), BatchSummary.csv(rows));
         return rows;

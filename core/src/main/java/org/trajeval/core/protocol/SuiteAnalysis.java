@@ -99,13 +99,7 @@ public final class SuiteAnalysis {
             }
             scores[i] = runs.get(i).score();
         }
-        SuiteReport.Proportion rate = null;
-        if (!runs.isEmpty()) {
-            Interval w = BinomialInterval.WILSON.of(failures, runs.size(), level);
-            Interval cp = BinomialInterval.CLOPPER_PEARSON.of(failures, runs.size(), level);
-            rate = new SuiteReport.Proportion(w.estimate(), level, new Bounds(w.lower(), w.upper()),
-                    new Bounds(cp.lower(), cp.upper()), clustered(sequences, runs, level));
-        }
+        SuiteReport.Proportion rate = failureRate(sequences, runs, level);
         List<SequenceSummary> scorePerSeq = new ArrayList<>();
         double[][] scoreGroups = new double[sequences.size()][];
         for (int i = 0; i < sequences.size(); i++) {
@@ -132,6 +126,21 @@ public final class SuiteAnalysis {
         return new MethodSummary(method, runs.size(), failures, rate,
                 new SuiteReport.Summary(sc.n(), nullable(sc.mean()), nullable(sc.sd())), scorePerSeq, metrics,
                 variance(scoreGroups));
+    }
+
+    /**
+     * The failure rate f/n of some runs with its Wilson, Clopper-Pearson and clustered (Korn-Graubard,
+     * seeds of one sequence as a cluster) intervals; null without runs.
+     */
+    static SuiteReport.Proportion failureRate(List<String> sequences, List<RunEntry> runs, double level) {
+        if (runs.isEmpty()) {
+            return null;
+        }
+        int failures = (int) runs.stream().filter(r -> !r.ok()).count();
+        Interval w = BinomialInterval.WILSON.of(failures, runs.size(), level);
+        Interval cp = BinomialInterval.CLOPPER_PEARSON.of(failures, runs.size(), level);
+        return new SuiteReport.Proportion(w.estimate(), level, new Bounds(w.lower(), w.upper()),
+                new Bounds(cp.lower(), cp.upper()), clustered(sequences, runs, level));
     }
 
     /** Korn-Graubard interval of the failure rate with the runs clustered by sequence. */
