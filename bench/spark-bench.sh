@@ -5,10 +5,11 @@
 # --runs, printed with the load average (uptime) before each run. Runs under nice -n 10.
 #
 #   bench/spark-bench.sh [--pairs 10000] [--poses 10000] [--files 20] [--runs 3]
-#                        [--cluster] [--big 10000000] [--big-mem 6g] [--work DIR]
+#                        [--cluster] [--no-local] [--big 10000000] [--big-mem 6g] [--work DIR]
 #
 # --files F: distinct file pairs; the table's N rows cycle through them (each row is read and
 #   scored in full; the files come from the page cache after the first read, for both sides).
+# --no-local: skip the local[2] against eval --batch comparison.
 # --cluster: also time the standalone cluster (Master + 1, then 2 Workers, 1 core and 2 GiB
 #   each, on 127.0.0.1), submitting build/libs/trajeval-spark-*-all.jar through SparkSubmit.
 # --big P: one P-pose pair in one task (local[1]) with --big-mem as the driver's heap (in local
@@ -16,7 +17,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
-pairs=10000 poses=10000 files=20 runs=3 cluster=0 big=0 bigmem=6g work=
+pairs=10000 poses=10000 files=20 runs=3 cluster=0 local=1 big=0 bigmem=6g work=
 while [ $# -gt 0 ]; do
   case "$1" in
     --pairs) pairs=$2; shift 2 ;;
@@ -24,6 +25,7 @@ while [ $# -gt 0 ]; do
     --files) files=$2; shift 2 ;;
     --runs) runs=$2; shift 2 ;;
     --cluster) cluster=1; shift ;;
+    --no-local) local=0; shift ;;
     --big) big=$2; shift 2 ;;
     --big-mem) bigmem=$2; shift 2 ;;
     --work) work=$2; shift 2 ;;
@@ -74,18 +76,20 @@ timed() { # LABEL COMMAND...: seconds of the fastest of $runs runs
     rm -rf "$work/out"
     echo "$label run $r: load average $(uptime | sed 's/.*load average: //')" >&2
     local s=$(date +%s.%N)
-    nice -n 10 "$@" > "$work/last.log" 2>&1 || { cat "$work/last.log" >&2; exit 1; }
+    "$@" > "$work/last.log" 2>&1 || { cat "$work/last.log" >&2; exit 1; }
     times+=("$(echo "$(date +%s.%N) - $s" | bc)")
   done
   printf '%s\n' "${times[@]}" | best
 }
-batch=$(timed "eval --batch --threads 2" "$trajeval" eval --batch "$table" --reports "$work/out" --threads 2)
-local2=$(timed "trajeval-spark local[2]" "$tspark" score --pairs "$table" --out "$work/out" --master 'local[2]')
 echo
 echo "$pairs pairs of $poses-pose 3D TUM files ($files distinct file pairs), min of $runs runs:"
+if [ "$local" = 1 ]; then
+batch=$(timed "eval --batch --threads 2" nice -n 10 "$trajeval" eval --batch "$table" --reports "$work/out" --threads 2)
+local2=$(timed "trajeval-spark local[2]" nice -n 10 "$tspark" score --pairs "$table" --out "$work/out" --master 'local[2]')
 printf '  eval --batch --threads 2 : %8.1f s  %8.1f pairs/s\n' "$batch" "$(echo "$pairs / $batch" | bc -l)"
 printf '  trajeval-spark local[2]  : %8.1f s  %8.1f pairs/s  (%.2fx eval --batch)\n' "$local2" \
   "$(echo "$pairs / $local2" | bc -l)" "$(echo "$local2 / $batch" | bc -l)"
+fi
 
 if [ "$cluster" = 1 ]; then
   home=$work/spark-home

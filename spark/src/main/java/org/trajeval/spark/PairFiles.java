@@ -55,16 +55,16 @@ final class PairFiles implements Serializable {
         if (uri.getScheme() == null || uri.getScheme().length() == 1) {
             return Path.of(text); // a plain path (or a Windows drive letter)
         }
-        try {
-            FileSystem fs = FileSystem.get(uri, configuration());
-            if (fs instanceof LocalFileSystem local) {
-                return local.pathToFile(new org.apache.hadoop.fs.Path(uri)).toPath();
-            }
+        if (!"file".equalsIgnoreCase(uri.getScheme())) {
             throw new InputException(text, 0, column, InputProblem.UNREADABLE, "file system '" + uri.getScheme()
                     + "' is not read by this version of trajeval-spark (local paths and file: URIs are); copy the "
                     + "files to the executors' disks or a mounted folder", uri.getScheme());
+        }
+        try {
+            LocalFileSystem local = FileSystem.getLocal(configuration());
+            return local.pathToFile(new org.apache.hadoop.fs.Path(uri)).toPath();
         } catch (IOException e) {
-            throw new InputException(text, 0, column, InputProblem.UNREADABLE, "cannot open its file system: "
+            throw new InputException(text, 0, column, InputProblem.UNREADABLE, "cannot open the local file system: "
                     + e.getMessage(), text, e);
         }
     }

@@ -87,7 +87,11 @@ class TrajevalSparkScoreTest {
                 RowFactory.create(data("freiburg1_xyz-groundtruth.txt"), garbage.toString(), "garbage", null, null,
                         null),
                 RowFactory.create(data("freiburg1_xyz-groundtruth.txt"), data("freiburg1_xyz-rgbdslam.txt"),
-                        "bad-option", null, "banana", null));
+                        "bad-option", null, "banana", null),
+                RowFactory.create(data("freiburg1_xyz-groundtruth.txt"), "file://" + data("freiburg1_xyz-rgbdslam.txt"),
+                        "file-uri", "evo", "se3", null),
+                RowFactory.create(data("freiburg1_xyz-groundtruth.txt"), "s3a://bucket/freiburg1_xyz-rgbdslam.txt",
+                        "s3a", null, null, null));
         Dataset<Row> pairs = spark.createDataFrame(rows, PAIRS).repartition(3);
 
         List<Row> out = TrajevalSpark.score(pairs, Map.of()).collectAsList();
@@ -130,6 +134,7 @@ class TrajevalSparkScoreTest {
                 "a missing file: eval's message");
         assertEquals(firstLine(eval(rows.get(7)).err), "trajeval: " + byRobot.get("garbage").getAs(ResultSchema.FAILURE_DETAIL),
                 "a garbage file: eval's message");
+        assertEquals("unreadable", byRobot.get("s3a").getAs(ResultSchema.FAILURE_REASON), "a file system not read");
         Row bad = byRobot.get("bad-option");
         assertEquals("invalid_configuration", bad.getAs(ResultSchema.FAILURE_REASON));
         String msg = bad.getAs(ResultSchema.FAILURE_DETAIL);
@@ -205,7 +210,10 @@ class TrajevalSparkScoreTest {
 
     /** trajeval eval REF EST --json with the row's settings as flags, in this JVM. */
     static Eval eval(Row in) {
-        List<String> args = new ArrayList<>(List.of("eval", in.getString(0), in.getString(1), "--json"));
+        // a file: URI is the local file (Hadoop's local file system); eval takes the path
+        String est = in.getString(1).startsWith("file://") ? in.getString(1).substring("file://".length())
+                : in.getString(1);
+        List<String> args = new ArrayList<>(List.of("eval", in.getString(0), est, "--json"));
         for (int i = 3; i < in.size(); i++) {
             if (!in.isNullAt(i)) {
                 Setting s = Setting.fromKey(PAIRS.fieldNames()[i]);
