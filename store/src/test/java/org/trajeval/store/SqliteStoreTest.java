@@ -61,7 +61,7 @@ class SqliteStoreTest extends ResultsStoreContract {
         }
         StoreException e = assertThrows(StoreException.class, () -> ResultsStore.open(loc, CLOCK));
         assertEquals(StoreException.Problem.SCHEMA, e.problem());
-        assertTrue(e.getMessage().contains("version 99, newer than this trajeval knows (2)"), e.getMessage());
+        assertTrue(e.getMessage().contains("version 99, newer than this trajeval knows (3)"), e.getMessage());
     }
 
     @Test
