@@ -92,4 +92,29 @@ class SqliteStoreTest extends ResultsStoreContract {
             }
         }
     }
+
+    @Test
+    void aVersionTwoStoreIsUpgradedToVersionThreeKeepingItsRows() throws Exception {
+        StoreLocation loc = freshLocation();
+        try (ResultsStore s = ResultsStore.open(loc, CLOCK)) {
+            s.record(java.util.List.of(Records.run(1, "bot-1", "hall", "2.3", 1, 0.1, 0, java.util.Map.of())));
+        }
+        // make it the store a V2 trajeval left: V3's columns and index gone, V3 not recorded
+        try (Connection c = DriverManager.getConnection(loc.jdbcUrl()); Statement s = c.createStatement()) {
+            s.executeUpdate("DROP INDEX runs_by_domain");
+            for (String col : new String[] {"domain", "scenario", "simulator", "environment", "modality",
+                "ground_truth", "factors", "wall_time_s", "peak_memory_mib"}) {
+                s.executeUpdate("ALTER TABLE runs DROP COLUMN " + col);
+            }
+            s.executeUpdate("DELETE FROM trajeval_schema_migrations WHERE version = 3");
+        }
+        try (ResultsStore s = ResultsStore.open(loc, CLOCK)) {
+            assertEquals(1, s.count());
+        }
+        try (Connection c = DriverManager.getConnection(loc.jdbcUrl()); Statement s = c.createStatement();
+                ResultSet rs = s.executeQuery("SELECT domain, wall_time_s FROM runs")) {
+            assertTrue(rs.next());
+            assertEquals(null, rs.getString(1), "rows recorded before V3 have no description");
+        }
+    }
 }
