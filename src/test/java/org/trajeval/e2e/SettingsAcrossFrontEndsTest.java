@@ -112,7 +112,7 @@ class SettingsAcrossFrontEndsTest {
                 // two topics of one ROS 2 bag (an inline Kafka event carries text files only: no bag)
                 new Case("nav2 MCAP topics", r.resolve("ros/nav2_turtlebot.mcap"), r.resolve("ros/nav2_turtlebot.mcap"),
                         settings("ref_topic", "/amcl_pose", "est_topic", "/odom", "stamps", "header", "pose_field",
-                        "pose.pose", "alignment", "se3"), false));
+                        "pose.pose", "alignment", "se3", "bag_crc", "all"), false));
     }
 
     /** A seeded planar pair with ms stamps, ';' delimiter, own column names and one swapped line (needs sort). */

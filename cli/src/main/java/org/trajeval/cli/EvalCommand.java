@@ -74,7 +74,7 @@ public final class EvalCommand implements Callable<Integer> {
     PlotOptions plots = new PlotOptions();
 
     @Option(names = "--threads", paramLabel = "N", converter = BoundedOptions.Threads.class, description = "Threads for reading the two files at once and "
-            + "for the element-wise passes of the planar evaluation (default: ${DEFAULT-VALUE}; 1 does everything on "
+            + "for the element-wise passes of the evaluation; with --batch, pairs scored at once (default: ${DEFAULT-VALUE}; 1 does everything on "
             + "one thread). The numbers do not depend on it.", defaultValue = "2")
     int threads;
 

@@ -20,7 +20,8 @@ final class EvalPlots {
             saved.write(plots.seriesDir);
         }
         if (plots.plotDir != null) {
-            EvalPlotPage.write(saved, plots.plane, plots.plotDir, ProgressBar.counter(err, "figures"));
+            EvalPlotPage.write(saved, plots.plane, plots.plotDir, plots.formats,
+                    ProgressBar.counter(err, "figures"));
         }
         return saved.report();
     }

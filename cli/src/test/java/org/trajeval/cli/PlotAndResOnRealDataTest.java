@@ -85,6 +85,25 @@ class PlotAndResOnRealDataTest {
     }
 
     @Test
+    void plotFormatPdfWritesAVectorPagePerFigureInsteadOfPng() throws Exception {
+        Path out = dir.resolve("pdf-plots");
+        SuiteCommandsTest.Run r = SuiteCommandsTest.run("eval", refdata.resolve("KITTI_00_gt.txt").toString(),
+                refdata.resolve("KITTI_00_ORB.txt").toString(), "--align", "se3", "--plot", out.toString(),
+                "--plot-format", "pdf,svg");
+        assertEquals(0, r.code(), r.err());
+        byte[] pdf = Files.readAllBytes(out.resolve("trajectories.pdf"));
+        assertEquals("%PDF-1.4", new String(pdf, 0, 8, java.nio.charset.StandardCharsets.ISO_8859_1));
+        assertTrue(Files.isRegularFile(out.resolve("subtraj_rot.pdf")));
+        assertTrue(Files.isRegularFile(out.resolve("ate_trans.svg")));
+        assertTrue(!Files.exists(out.resolve("ate_trans.png")));
+        assertTrue(Files.readString(out.resolve("index.html")).contains("<a href=\"ate_trans.pdf\">PDF</a>"));
+        SuiteCommandsTest.Run bad = SuiteCommandsTest.run("eval", refdata.resolve("KITTI_00_gt.txt").toString(),
+                refdata.resolve("KITTI_00_ORB.txt").toString(), "--plot", out.toString(), "--plot-format", "eps");
+        assertEquals(ExitCodes.BAD_INPUT, bad.code(), bad.err());
+        assertTrue(bad.err().contains("expected a comma list of svg, png and pdf, found \"eps\""), bad.err());
+    }
+
+    @Test
     void evoApeArchiveHoldsTrajevalsPerPoseErrors() {
         ResultSet evo = SavedResults.read(refdata.resolve("evo_results/orb_ape.zip"), "evo");
         ResultSet ours = SavedResults.read(dir.resolve("orb"), "trajeval");

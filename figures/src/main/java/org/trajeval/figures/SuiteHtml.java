@@ -35,7 +35,10 @@ public final class SuiteHtml {
     /** Folder (inside the report folder) of the figures as SVG files, for papers. */
     public static final String FIGURES = "figures";
 
-    /** Writes {@link #FILE} into {@code dir}, and every figure as {@code figures/NN_NAME.svg} (each atomically). */
+    /**
+     * Writes {@link #FILE} into {@code dir}, and every figure as {@code figures/NN_NAME.svg} and
+     * {@code figures/NN_NAME.pdf} (vector, for a paper; each atomically).
+     */
     public static void write(SuiteReport report, List<SequencePlot> plots, Path dir) {
         List<Figure> figures = figures(report, plots);
         Map<Figure, String> svg = new LinkedHashMap<>();
@@ -43,8 +46,9 @@ public final class SuiteHtml {
         for (Figure f : figures) {
             String text = FigureFiles.svg(f);
             svg.put(f, text);
-            ReportJson.writeAtomically(dir.resolve(FIGURES).resolve(String.format(Locale.ROOT, "%02d_%s.svg", ++i,
-                    f.name())), text);
+            String stem = String.format(Locale.ROOT, "%02d_%s", ++i, f.name());
+            ReportJson.writeAtomically(dir.resolve(FIGURES).resolve(stem + ".svg"), text);
+            ReportJson.writeAtomically(dir.resolve(FIGURES).resolve(stem + ".pdf"), FigureFiles.pdf(f));
         }
         ReportJson.writeAtomically(dir.resolve(FILE), render(report, plots, svg));
     }

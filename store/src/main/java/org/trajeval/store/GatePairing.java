@@ -7,16 +7,27 @@ package org.trajeval.store;
  */
 public enum GatePairing {
     /** By (route, seed), as suite runs are: sequence = route. */
-    ROUTE_SEED("COALESCE(r.route, '-')", "COALESCE(r.seed, 0)"),
+    ROUTE_SEED("COALESCE(r.route, '-')", "COALESCE(r.seed, 0)", "r.method, r.route, r.seed"),
     /** By (robot, route), every run of a robot on a route averaged: sequence = robot/route, no seed. */
-    ROBOT_ROUTE("COALESCE(r.robot, '-') || '/' || COALESCE(r.route, '-')", "CAST(0 AS BIGINT)");
+    ROBOT_ROUTE("COALESCE(r.robot, '-') || '/' || COALESCE(r.route, '-')", "CAST(0 AS BIGINT)",
+            "r.method, r.robot, r.route");
 
     private final String sequence;
     private final String seed;
+    private final String columns;
 
-    GatePairing(String sequence, String seed) {
+    GatePairing(String sequence, String seed, String columns) {
         this.sequence = sequence;
         this.seed = seed;
+        this.columns = columns;
+    }
+
+    /**
+     * @return the raw columns the pairing keys are made of, on table alias {@code r}: grouping by them
+     *     (not by the keys' expressions) follows an index's order instead of sorting
+     */
+    String keyColumns() {
+        return columns;
     }
 
     /** @return the SQL of the pairing sequence on table alias {@code r} (SQLite and PostgreSQL alike) */

@@ -149,13 +149,21 @@ public final class StoredGate {
         });
     }
 
-    /** Appends one side's grouped subquery: (method, seq, seed, n0, s0, n1, s1, ...). */
+    /**
+     * Appends one side's grouped subquery: (method, seq, seed, n0, s0, n1, s1, ...). The inner query
+     * groups by the raw key columns (in the order of the version index, which then holds every
+     * column it reads: no sort, no table access); the outer one merges groups whose keys coincide
+     * once NULLs read as {@code -} or 0.
+     */
     private static void side(StringBuilder sql, List<Object> args, Selection selection, GatePairing pairing,
             List<String> metrics) {
-        String method = GatePairing.methodExpression();
-        String seq = pairing.sequenceExpression();
-        String seed = pairing.seedExpression();
-        sql.append("(SELECT ").append(method).append(" AS method, ").append(seq).append(" AS seq, ").append(seed)
+        sql.append("(SELECT method, seq, seed");
+        for (int i = 0; i < metrics.size(); i++) {
+            sql.append(", SUM(n").append(i).append(") AS n").append(i).append(", SUM(s").append(i).append(") AS s")
+                    .append(i);
+        }
+        sql.append(" FROM (SELECT ").append(GatePairing.methodExpression()).append(" AS method, ")
+                .append(pairing.sequenceExpression()).append(" AS seq, ").append(pairing.seedExpression())
                 .append(" AS seed");
         for (int i = 0; i < metrics.size(); i++) {
             String v = value(metrics.get(i));
@@ -164,7 +172,7 @@ public final class StoredGate {
         }
         sql.append(" FROM runs r WHERE 1 = 1");
         selection.appendWhere(sql, args);
-        sql.append(" GROUP BY ").append(method).append(", ").append(seq).append(", ").append(seed).append(")");
+        sql.append(" GROUP BY ").append(pairing.keyColumns()).append(") k GROUP BY method, seq, seed)");
     }
 
     /** @return the SQL of a metric's value: successful runs only, except the score (a failed run scores 0) */

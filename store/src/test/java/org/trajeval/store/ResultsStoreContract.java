@@ -133,7 +133,8 @@ abstract class ResultsStoreContract {
     void theGatePairedInSqlMatchesTheGateOnTheSameRunsInJava() throws Exception {
         // the reference is RegressionGate.gateAll over the runs as suite run entries (the file gate's
         // pairing in Java); the data has what pairing must handle: seeds only one side has, repeated
-        // (method, route, seed) runs, failed runs, runs without route or seed, a method only one side has
+        // (method, route, seed) runs, failed runs, runs without route or seed (and a route named "-",
+        // which pairs with them, as in Java), a method only one side has
         Random rnd = new Random(14);
         List<RunRecord> runs = new ArrayList<>();
         int id = 0;
@@ -153,7 +154,7 @@ abstract class ResultsStoreContract {
                                     "score", 100 - 100 * ate) : Map.of("score", 0.0);
                             runs.add(new RunRecord(ReportRecords.sha256("gate", Integer.toString(id)), "suite",
                                     "r" + id, null, null, null, "bot-" + (id++ % 2), null, route == 5 ? null
-                                    : "route-" + route, method, version, route == 4 && seed == 1 ? null : seed,
+                                    : route == 3 ? "-" : "route-" + route, method, version, route == 4 && seed == 1 ? null : seed,
                                     Instant.ofEpochMilli(id), ok, ok ? null : "diverged", m, "test", Map.of()));
                         }
                     }

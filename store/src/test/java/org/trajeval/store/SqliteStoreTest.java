@@ -73,6 +73,8 @@ class SqliteStoreTest extends ResultsStoreContract {
         // make it the store an earlier trajeval left: V2 neither applied nor recorded
         try (Connection c = DriverManager.getConnection(loc.jdbcUrl()); Statement s = c.createStatement()) {
             s.executeUpdate("DROP INDEX runs_by_site");
+            s.executeUpdate("DROP INDEX runs_by_version_gate");
+            s.executeUpdate("CREATE INDEX runs_by_version ON runs (software_version, method, route, seed)");
             s.executeUpdate("DELETE FROM trajeval_schema_migrations WHERE version = 2");
         }
         try (ResultsStore s = ResultsStore.open(loc, CLOCK)) {
@@ -85,10 +87,14 @@ class SqliteStoreTest extends ResultsStoreContract {
                 assertTrue(rs.next());
                 assertEquals("V2__site_version_tags.sql", rs.getString(1));
             }
-            try (ResultSet rs = s.executeQuery("SELECT COUNT(*) FROM sqlite_master WHERE type = 'index' "
-                    + "AND name = 'runs_by_site'")) {
-                rs.next();
-                assertEquals(1, rs.getInt(1), "V2's index exists again");
+            try (ResultSet rs = s.executeQuery("SELECT name FROM sqlite_master WHERE type = 'index' "
+                    + "AND name LIKE 'runs_by_%' ORDER BY name")) {
+                java.util.List<String> names = new java.util.ArrayList<>();
+                while (rs.next()) {
+                    names.add(rs.getString(1));
+                }
+                assertEquals(java.util.List.of("runs_by_robot", "runs_by_route", "runs_by_site", "runs_by_time",
+                        "runs_by_version_gate"), names, "V2's indexes, V1's runs_by_version replaced");
             }
         }
     }

@@ -1,13 +1,9 @@
 package org.trajeval.core.batch;
 
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.Future;
-import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Consumer;
 import org.trajeval.core.InputException;
 import org.trajeval.core.eval.EvaluationOptions;
@@ -47,15 +43,7 @@ public final class BatchRunner {
     public static BatchResult score(BatchPair pair, SettingValues base, String table, ReadOptions limits,
             PathResolver paths, Path reportDir) {
         try {
-            SettingValues s = base.with(pair.settings(), table + ":" + pair.line());
-            LoadedTrajectory ref = TrajectoryReader.read(Path.of(pair.reference()),
-                    SettingsResolver.readOptions(s, FileRole.REFERENCE, limits, paths));
-            LoadedTrajectory est = TrajectoryReader.read(Path.of(pair.estimate()),
-                    SettingsResolver.readOptions(s, FileRole.ESTIMATE, limits, paths));
-            FormatApplicability.check(s, ref, pair.reference(), est, pair.estimate());
-            EvaluationOptions options = SettingsResolver.evaluationOptions(s,
-                    DataKind.of(ref.trajectory(), est.trajectory()));
-            EvaluationReport report = Evaluator.evaluate(ref, est, options);
+            EvaluationReport report = evaluate(pair, base, table + ":" + pair.line(), limits, paths);
             String file = pair.reportName() + ".json";
             try {
                 ReportJson.writeAtomically(reportDir.resolve(file), ReportJson.toJson(report) + "\n");
@@ -64,14 +52,45 @@ public final class BatchRunner {
                         + ": " + e.getCause().getMessage());
             }
             return BatchResult.scored(pair, report, file);
-        } catch (java.nio.file.InvalidPathException e) {
-            return BatchResult.failed(pair, "unreadable", "not a file path: " + e.getMessage());
-        } catch (InputException e) {
-            return BatchResult.failed(pair, e.problem().name().toLowerCase(Locale.ROOT), e.getMessage());
-        } catch (RuntimeException e) { // a bug: the row says so, the batch goes on
-            return BatchResult.failed(pair, BatchResult.INTERNAL_ERROR, e.getClass().getName()
-                    + (e.getMessage() == null ? "" : ": " + e.getMessage()));
+        } catch (RuntimeException e) { // bad input, or a bug: the row says which, the batch goes on
+            return failed(pair, e);
         }
+    }
+
+    /**
+     * Reads and scores one pair as {@code trajeval eval} does (the row's settings refine the job's;
+     * settings checked against the formats read), without writing anything: the step a Spark task
+     * runs per row.
+     *
+     * @param settingsSource how refusals of the row's settings name it ({@code pairs.csv:7})
+     * @throws InputException when the pair cannot be scored
+     */
+    public static EvaluationReport evaluate(BatchPair pair, SettingValues base, String settingsSource,
+            ReadOptions limits, PathResolver paths) {
+        SettingValues s = base.with(pair.settings(), settingsSource);
+        LoadedTrajectory ref = TrajectoryReader.read(Path.of(pair.reference()),
+                SettingsResolver.readOptions(s, FileRole.REFERENCE, limits, paths));
+        LoadedTrajectory est = TrajectoryReader.read(Path.of(pair.estimate()),
+                SettingsResolver.readOptions(s, FileRole.ESTIMATE, limits, paths));
+        FormatApplicability.check(s, ref, pair.reference(), est, pair.estimate());
+        EvaluationOptions options = SettingsResolver.evaluationOptions(s,
+                DataKind.of(ref.trajectory(), est.trajectory()));
+        return Evaluator.evaluate(ref, est, options);
+    }
+
+    /**
+     * @return the failed row of a pair whose scoring threw {@code e}: bad input gives its problem as
+     *     the reason, anything else {@link BatchResult#INTERNAL_ERROR} (caught as at a top-level handler)
+     */
+    public static BatchResult failed(BatchPair pair, RuntimeException e) {
+        if (e instanceof java.nio.file.InvalidPathException) {
+            return BatchResult.failed(pair, "unreadable", "not a file path: " + e.getMessage());
+        }
+        if (e instanceof InputException ie) {
+            return BatchResult.failed(pair, ie.problem().name().toLowerCase(Locale.ROOT), ie.getMessage());
+        }
+        return BatchResult.failed(pair, BatchResult.INTERNAL_ERROR, e.getClass().getName()
+                + (e.getMessage() == null ? "" : ": " + e.getMessage()));
     }
 
     /**
@@ -84,33 +103,10 @@ public final class BatchRunner {
     public static List<BatchResult> run(List<BatchPair> pairs, SettingValues base, String table, ReadOptions limits,
             PathResolver paths, Path reportDir, Parallelism parallelism, Consumer<BatchResult> done) {
         BatchResult[] out = new BatchResult[pairs.size()];
-        AtomicInteger next = new AtomicInteger();
-        Runnable worker = () -> {
-            for (int k = next.getAndIncrement(); k < out.length; k = next.getAndIncrement()) {
-                out[k] = score(pairs.get(k), base, table, limits, paths, reportDir);
-                done.accept(out[k]);
-            }
-        };
-        int helpers = Math.min(parallelism.threads(), Math.max(out.length, 1)) - 1;
-        List<Future<?>> futures = new ArrayList<>();
-        for (int h = 0; h < helpers; h++) {
-            futures.add(parallelism.executor().submit(worker));
-        }
-        worker.run();
-        for (Future<?> f : futures) {
-            try {
-                f.get();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                throw new IllegalStateException("interrupted while scoring the batch", e);
-            } catch (ExecutionException e) {
-                Throwable cause = e.getCause();
-                if (cause instanceof Error err) {
-                    throw err;
-                }
-                throw cause instanceof RuntimeException re ? re : new IllegalStateException(cause);
-            }
-        }
+        parallelism.forEach(out.length, k -> {
+            out[k] = score(pairs.get(k), base, table, limits, paths, reportDir);
+            done.accept(out[k]);
+        });
         List<BatchResult> rows = Arrays.asList(out);
         ReportJson.writeAtomically(reportDir.resolve(BatchSummary.FILE), BatchSummary.csv(rows));
         return rows;

@@ -54,6 +54,10 @@ public enum Setting {
     POSE_FIELD("pose_field", "--pose-field", SettingKind.TEXT, SettingScope.READ_BOTH, "FIELD.PATH", "", "bag",
             "Field of a bag message type holding the pose (a geometry_msgs Pose or Transform), for types trajeval "
             + "does not know (it knows PoseStamped, PoseWithCovarianceStamped, TransformStamped, Odometry, Path)."),
+    BAG_CRC("bag_crc", "--bag-crc", SettingKind.CHOICE, SettingScope.READ_BOTH, "all|chunks", "", "bag",
+            "Checksums an MCAP bag must pass: all (default: the data section CRC too, one sequential pass over the "
+            + "file) or chunks (the summary and the chunks read only: faster when the bag is much larger than its "
+            + "pose topics). A CRC of 0 is 'not computed' and never compared."),
     CONVENTION("convention", "--convention", SettingKind.CHOICE, SettingScope.EVALUATION, "lesson|evo|kitti", "",
             "all", "Preset of rules (default lesson; evo when a bag topic is given). lesson: interpolated association, crop, se2/se3 alignment "
             + "(se2 for planar data, se3 for SE(3) data), RPE over 1 s for every start pose; evo: nearest within "

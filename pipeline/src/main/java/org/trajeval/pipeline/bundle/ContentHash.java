@@ -25,7 +25,7 @@ public record ContentHash(String reference, String estimate, String content) {
     /** @return the fingerprints of a run (reads both files once, streaming) */
     public static ContentHash of(RunJob job) {
         String ref = ofFile(job.reference());
-        String est = ofFile(job.estimate());
+        String est = job.estimate().equals(job.reference()) ? ref : ofFile(job.estimate()); // a bag: read once
         var m = job.metadata();
         String settings = job.settings().canonical();
         if (job.folder() != null) {

@@ -72,10 +72,16 @@ class RunLabelsTest {
     }
 
     @Test
-    void aKafkaEventCarriesTheSameLabels() {
-        RunEvent e = RunEvent.parse("{\"run_id\": \"r9\", \"bundle\": \"b/r9.zip\", \"site\": \"hamburg\", "
-                + "\"software_version\": \"2.10\", \"tags\": {\"shift\": \"night\", \"lane\": 3}}", "topic-0@5");
+    void anInlineKafkaEventCarriesTheSameLabelsABundleEventTakesItsRunYamls() {
+        String inline = "{\"run_id\": \"r9\", \"reference\": {\"file_name\": \"gt.csv\", \"data\": \"t,x,y,yaw\"}, "
+                + "\"estimate\": {\"file_name\": \"est.csv\", \"data\": \"t,x,y,yaw\"}, \"site\": \"hamburg\", "
+                + "\"software_version\": \"2.10\", \"tags\": {\"shift\": \"night\", \"lane\": 3}}";
+        RunEvent e = RunEvent.parse(inline, "topic-0@5");
         assertEquals(new RunLabels("hamburg", "2.10", Map.of("shift", "night", "lane", "3")), e.metadata().labels());
+        // a bundle's labels are its run.yaml's (as its metrics are): one in the event would be lost, so it is refused
+        InputException bundle = assertThrows(InputException.class, () -> RunEvent.parse(
+                "{\"run_id\": \"r9\", \"bundle\": \"b/r9.zip\", \"site\": \"hamburg\"}", "topic-0@6"));
+        assertEquals("site", bundle.column());
     }
 
     private InputException refused(String labels) throws Exception {
