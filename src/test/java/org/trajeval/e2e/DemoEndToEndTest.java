@@ -110,7 +110,7 @@ class DemoEndToEndTest {
                 refdata.resolve("freiburg1_xyz-rgbdslam.txt").toString(), "--plot", dir.resolve("tum").toString()),
                 e.toString());
         HeadlessChromium.Result r = HeadlessChromium.open(dir.resolve("tum/index.html"), dir, "eval-plot");
-        assertEquals(9, r.images()); // trajectories, 4 over time, 4 histograms
+        assertEquals(11, r.images()); // trajectories, 4 over time, 4 histograms, 2 sub-trajectory box plots
         assertEquals(0, r.broken(), "images that did not load");
         assertEquals(0, r.blank(), "figures without data: " + r.blankAlts());
         assertEquals(List.of(), r.console());
