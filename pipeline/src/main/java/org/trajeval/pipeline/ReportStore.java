@@ -144,7 +144,12 @@ public final class ReportStore {
             Instant now = clock.instant();
             PipelineReport report = new PipelineReport(PipelineReport.SCHEMA, PipelineReport.SCHEMA_VERSION,
                     Version.TOOL, m.runId(), m.robotId(), m.sequence(), m.method(), m.seed(), m.labels().site(),
-                    m.labels().softwareVersion(), m.labels().tags().isEmpty() ? null : m.labels().tags(), version,
+                    m.labels().softwareVersion(), m.labels().tags().isEmpty() ? null : m.labels().tags(),
+                    m.about().domain(), m.about().simulator(), m.about().scenario(),
+                    m.about().factors().isEmpty() ? null : m.about().factors(), m.about().environment(),
+                    m.about().modality(), m.about().groundTruth(), m.resources() == null ? null
+                            : new PipelineReport.Resources(m.resources().wallTimeS(), m.resources().peakMemoryMib(),
+                                    m.resources().cpuTimeS(), m.resources().device()), version,
                     hash.content(), hash.reference(), hash.estimate(), job.source(), now.toString(), evaluation);
             Path file = reportFile(m.runId(), version);
             writer.accept(file, ReportJson.toJson(report));

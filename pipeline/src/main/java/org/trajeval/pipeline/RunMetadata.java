@@ -14,9 +14,12 @@ import org.trajeval.core.InputProblem;
  * @param method the estimator that produced the estimate, or {@code null}
  * @param seed the estimator's random seed, or {@code null}
  * @param labels site, software version and free tags ({@link RunLabels#NONE} when none)
+ * @param about domain, simulator, scenario, factor levels and taxonomy (the core's run fields)
+ * @param resources measured wall time and memory of the run, or null
  */
 public record RunMetadata(String runId, String robotId, String sequence, String method, Long seed,
-        RunLabels labels) {
+        RunLabels labels, org.trajeval.core.options.RunMetadata about,
+        org.trajeval.core.options.RunResources resources) {
     private static final Pattern RUN_ID = Pattern.compile("[A-Za-z0-9_-][A-Za-z0-9._-]{0,127}");
 
     /** @throws InputException when the run id cannot name a file safely */
@@ -26,6 +29,12 @@ public record RunMetadata(String runId, String robotId, String sequence, String 
                     "run_id must be 1 to 128 characters of A-Z a-z 0-9 . _ - not starting with '.'", runId);
         }
         labels = labels == null ? RunLabels.NONE : labels;
+        about = about == null ? org.trajeval.core.options.RunMetadata.NONE : about;
+    }
+
+    /** Metadata without description fields or resources. */
+    public RunMetadata(String runId, String robotId, String sequence, String method, Long seed, RunLabels labels) {
+        this(runId, robotId, sequence, method, seed, labels, null, null);
     }
 
     /** Metadata without fleet labels. */

@@ -114,7 +114,46 @@ public final class ReportRecords {
                 labels.column("route", text(n, "sequence")), labels.column("method", text(n, "method")),
                 labels.column("software_version", text(n, "software_version")),
                 seed == null || seed.isNull() ? labelSeed(labels) : Long.valueOf(seed.asLong()), at, true, null,
-                metrics, source, tags);
+                metrics, source, tags, description(n));
+    }
+
+    /** @return a suite run's description: its sequence's fields and its measured resources */
+    private static RunDescription description(SuiteReport.SequenceEntry q,
+            org.trajeval.core.report.BudgetReport.RunBudget b) {
+        if (q == null) {
+            return RunDescription.NONE;
+        }
+        return new RunDescription(q.domain(), q.scenario(), q.simulator(), q.environment(), q.modality(),
+                q.groundTruth(), factors(q.factors()), b == null ? null : b.wallTimeS(),
+                b == null ? null : b.peakMemoryMib());
+    }
+
+    /** @return a pipeline report's description fields (absent in reports before issue 18: all null) */
+    private static RunDescription description(JsonNode n) {
+        java.util.Map<String, Double> f = new java.util.TreeMap<>();
+        JsonNode fn = n.get("factors");
+        if (fn != null && fn.isObject()) {
+            fn.fields().forEachRemaining(e -> f.put(e.getKey(), e.getValue().asDouble()));
+        }
+        JsonNode res = n.get("resources");
+        Double wall = null;
+        Double mem = null;
+        if (res != null && res.isObject()) {
+            wall = res.hasNonNull("wall_time_s") ? res.get("wall_time_s").asDouble() : null;
+            mem = res.hasNonNull("peak_memory_mib") ? res.get("peak_memory_mib").asDouble() : null;
+        }
+        return new RunDescription(text(n, "domain"), text(n, "scenario"), text(n, "simulator"),
+                text(n, "environment"), text(n, "modality"), text(n, "ground_truth"), factors(f), wall, mem);
+    }
+
+    /** @return factor levels as {@code name=level;name=level}, or null without factors */
+    private static String factors(java.util.Map<String, Double> f) {
+        if (f == null || f.isEmpty()) {
+            return null;
+        }
+        List<String> out = new ArrayList<>();
+        new java.util.TreeMap<>(f).forEach((k, v) -> out.add(k + "=" + v));
+        return String.join(";", out);
     }
 
     /** @return the seed label, or null ({@link Labels#parse} checked it is a whole number) */
@@ -186,6 +225,12 @@ public final class ReportRecords {
             references.put(s.id(), digests.get("reference:" + s.reference()));
         }
         String settings = ReportJson.toJson(report.protocol().metrics()) + ReportJson.toJson(report.protocol().score());
+        Map<String, SuiteReport.SequenceEntry> sequences = new HashMap<>();
+        report.protocol().sequences().forEach(q -> sequences.put(q.id(), q));
+        Map<String, org.trajeval.core.report.BudgetReport.RunBudget> budgets = new HashMap<>();
+        if (report.budgets() != null) {
+            report.budgets().runs().forEach(b -> budgets.put(b.method() + "/" + b.sequence() + "/" + b.seed(), b));
+        }
         List<RunRecord> out = new ArrayList<>();
         for (SuiteReport.RunEntry r : report.runs()) {
             String key = sha256("suite", report.protocol().dataset(), r.method(), r.sequence(), Long.toString(r.seed()),
@@ -206,7 +251,9 @@ public final class ReportRecords {
             out.add(new RunRecord(key, "suite", r.method() + "/" + r.sequence() + "/" + r.seed(), null, null,
                     report.protocol().dataset(), labels.columns().get("robot"), labels.columns().get("site"),
                     r.sequence(), r.method(), labels.columns().get("software_version"), r.seed(), recordedAt, r.ok(),
-                    r.failure() == null ? null : r.failure().reason(), metrics, source, labels.tags()));
+                    r.failure() == null ? null : r.failure().reason(), metrics, source, labels.tags(),
+                    description(sequences.get(r.sequence()), budgets.get(r.method() + "/" + r.sequence() + "/"
+                            + r.seed()))));
         }
         return out;
     }

@@ -121,12 +121,13 @@ public final class ResultsStore implements AutoCloseable {
     }
 
     private int insert(List<RunRecord> list) throws SQLException {
-        StringBuilder sql = new StringBuilder("INSERT INTO runs (").append(LABELS);
+        StringBuilder sql = new StringBuilder("INSERT INTO runs (").append(LABELS).append(", ")
+                .append(RunDescription.COLUMNS);
         for (String m : StoredMetric.keys()) {
             sql.append(", ").append(m);
         }
         sql.append(") VALUES (?");
-        sql.append(", ?".repeat(LABEL_COUNT - 1 + StoredMetric.keys().size()));
+        sql.append(", ?".repeat(LABEL_COUNT - 1 + RunDescription.COUNT + StoredMetric.keys().size()));
         sql.append(") ON CONFLICT (result_sha256) DO NOTHING");
         connection.setAutoCommit(false);
         int inserted = 0;
@@ -180,6 +181,17 @@ public final class ResultsStore implements AutoCloseable {
         s.setString(i++, r.ok() ? "ok" : "failed");
         s.setString(i++, r.failureReason());
         s.setString(i++, r.source());
+        Object[] description = r.description().values();
+        for (int k = 0; k < description.length; k++) {
+            boolean number = k >= RunDescription.COUNT - 2; // wall_time_s, peak_memory_mib
+            if (description[k] == null) {
+                s.setNull(i++, number ? Types.DOUBLE : Types.VARCHAR);
+            } else if (number) {
+                s.setDouble(i++, (Double) description[k]);
+            } else {
+                s.setString(i++, (String) description[k]);
+            }
+        }
         for (String m : StoredMetric.keys()) {
             Double v = r.metrics().get(m);
             if (v == null || !Double.isFinite(v)) {

@@ -28,11 +28,21 @@ import java.util.regex.Pattern;
  * @param metrics metric columns ({@link StoredMetric#keys()}) to values; absent keys are NULL
  * @param source report file or other origin text, for people
  * @param tags free labels (key to value), stored in {@code run_tags}
+ * @param description domain, scenario, taxonomy, factors and measured resources (schema v3)
  */
 public record RunRecord(String resultSha256, String origin, String runId, Integer runVersion, String contentSha256,
         String dataset, String robot, String site, String route, String method, String softwareVersion, Long seed,
         Instant recordedAt, boolean ok, String failureReason, Map<String, Double> metrics, String source,
-        Map<String, String> tags) {
+        Map<String, String> tags, RunDescription description) {
+
+    /** A record without a description. */
+    public RunRecord(String resultSha256, String origin, String runId, Integer runVersion, String contentSha256,
+            String dataset, String robot, String site, String route, String method, String softwareVersion, Long seed,
+            Instant recordedAt, boolean ok, String failureReason, Map<String, Double> metrics, String source,
+            Map<String, String> tags) {
+        this(resultSha256, origin, runId, runVersion, contentSha256, dataset, robot, site, route, method,
+                softwareVersion, seed, recordedAt, ok, failureReason, metrics, source, tags, RunDescription.NONE);
+    }
     private static final Pattern HEX64 = Pattern.compile("[0-9a-f]{64}");
     private static final Pattern TAG = Pattern.compile("[A-Za-z0-9_.-]{1,64}");
 
@@ -43,6 +53,7 @@ public record RunRecord(String resultSha256, String origin, String runId, Intege
         }
         Objects.requireNonNull(origin, "origin");
         Objects.requireNonNull(recordedAt, "recordedAt");
+        description = description == null ? RunDescription.NONE : description;
         metrics = Map.copyOf(metrics == null ? Map.of() : metrics);
         for (String k : metrics.keySet()) {
             if (!StoredMetric.keys().contains(k)) {

@@ -61,7 +61,7 @@ class SqliteStoreTest extends ResultsStoreContract {
         }
         StoreException e = assertThrows(StoreException.class, () -> ResultsStore.open(loc, CLOCK));
         assertEquals(StoreException.Problem.SCHEMA, e.problem());
-        assertTrue(e.getMessage().contains("version 99, newer than this trajeval knows (2)"), e.getMessage());
+        assertTrue(e.getMessage().contains("version 99, newer than this trajeval knows (3)"), e.getMessage());
     }
 
     @Test
@@ -93,9 +93,35 @@ class SqliteStoreTest extends ResultsStoreContract {
                 while (rs.next()) {
                     names.add(rs.getString(1));
                 }
-                assertEquals(java.util.List.of("runs_by_robot", "runs_by_route", "runs_by_site", "runs_by_time",
-                        "runs_by_version_gate"), names, "V2's indexes, V1's runs_by_version replaced");
+                // runs_by_domain is V3's (still applied: only V2 was undone above)
+                assertEquals(java.util.List.of("runs_by_domain", "runs_by_robot", "runs_by_route", "runs_by_site",
+                        "runs_by_time", "runs_by_version_gate"), names, "V2's indexes, V1's runs_by_version replaced");
             }
+        }
+    }
+
+    @Test
+    void aVersionTwoStoreIsUpgradedToVersionThreeKeepingItsRows() throws Exception {
+        StoreLocation loc = freshLocation();
+        try (ResultsStore s = ResultsStore.open(loc, CLOCK)) {
+            s.record(java.util.List.of(Records.run(1, "bot-1", "hall", "2.3", 1, 0.1, 0, java.util.Map.of())));
+        }
+        // make it the store a V2 trajeval left: V3's columns and index gone, V3 not recorded
+        try (Connection c = DriverManager.getConnection(loc.jdbcUrl()); Statement s = c.createStatement()) {
+            s.executeUpdate("DROP INDEX runs_by_domain");
+            for (String col : new String[] {"domain", "scenario", "simulator", "environment", "modality",
+                "ground_truth", "factors", "wall_time_s", "peak_memory_mib"}) {
+                s.executeUpdate("ALTER TABLE runs DROP COLUMN " + col);
+            }
+            s.executeUpdate("DELETE FROM trajeval_schema_migrations WHERE version = 3");
+        }
+        try (ResultsStore s = ResultsStore.open(loc, CLOCK)) {
+            assertEquals(1, s.count());
+        }
+        try (Connection c = DriverManager.getConnection(loc.jdbcUrl()); Statement s = c.createStatement();
+                ResultSet rs = s.executeQuery("SELECT domain, wall_time_s FROM runs")) {
+            assertTrue(rs.next());
+            assertEquals(null, rs.getString(1), "rows recorded before V3 have no description");
         }
     }
 }

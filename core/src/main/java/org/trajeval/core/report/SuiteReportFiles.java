@@ -131,6 +131,7 @@ public final class SuiteReportFiles {
         for (String k : keys) {
             header.add(k + "_mean_of_sequence_means");
         }
+        header.addAll(List.of("budget_within", "budget_over", "budget_unknown", "budget_compliance"));
         row(sb, header);
         for (MethodSummary m : report.methods()) {
             List<String> f = new ArrayList<>(List.of(m.name(), Integer.toString(m.runs()),
@@ -151,6 +152,10 @@ public final class SuiteReportFiles {
                 MetricSummary ms = m.metrics().stream().filter(x -> x.metric().equals(k)).findFirst().orElse(null);
                 f.add(num(ms == null ? null : ms.meanOfSequenceMeans()));
             }
+            BudgetReport.MethodBudget b = report.budgets() == null ? null : report.budgets().methods().stream()
+                    .filter(x -> x.method().equals(m.name())).findFirst().orElse(null);
+            f.addAll(b == null ? List.of("", "", "", "") : List.of(Integer.toString(b.within()),
+                    Integer.toString(b.over()), Integer.toString(b.unknown()), num(b.compliance())));
             row(sb, f);
         }
         return sb.toString();

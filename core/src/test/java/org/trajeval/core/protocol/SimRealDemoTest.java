@@ -81,6 +81,10 @@ class SimRealDemoTest {
         assertTrue(runs.contains(",over,119.6,"), runs.lines().filter(l -> l.contains("c3_real")).toList().toString());
         assertTrue(runs.lines().findFirst().orElseThrow().endsWith("budget_status,wall_time_s,peak_memory_mib,"
                 + "real_time_factor,budget_detail"));
+        // methods.csv: beta 50 within, 1 over, compliance 50/51
+        String beta = SuiteReportFiles.methodsCsv(report).lines().filter(l -> l.startsWith("beta,")).findFirst()
+                .orElseThrow();
+        assertTrue(beta.endsWith(",50,1,0," + (50.0 / 51.0)), beta);
     }
 
     @Test

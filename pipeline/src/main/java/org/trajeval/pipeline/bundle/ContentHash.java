@@ -44,6 +44,11 @@ public record ContentHash(String reference, String estimate, String content) {
             // what it was before labels existed, so ledgers of earlier versions still recognise their runs
             identity += "\n" + m.labels().canonical();
         }
+        if (!m.about().equals(org.trajeval.core.options.RunMetadata.NONE) || m.resources() != null) {
+            // the description and the measured cost are part of the result (a sim run is not its real twin);
+            // absent, the hash is what it was before they existed
+            identity += "\n" + m.about() + "\n" + m.resources();
+        }
         return new ContentHash(ref, est, hex(digest().digest(identity.getBytes(StandardCharsets.UTF_8))));
     }
 

@@ -54,8 +54,14 @@ public final class RunFields {
     }
 
     /** The keys of {@link #metadata} and {@link #labels}, which every intake accepts. */
-    public static final Set<String> IDENTITY_KEYS = Set.of("run_id", "robot_id", "sequence", "method", "seed", "site",
-            "software_version", "tags");
+    public static final Set<String> IDENTITY_KEYS = identityKeys();
+
+    private static Set<String> identityKeys() {
+        Set<String> keys = new java.util.HashSet<>(Set.of("run_id", "robot_id", "sequence", "method", "seed", "site",
+                "software_version", "tags", "resources"));
+        keys.addAll(org.trajeval.core.options.RunField.keys());
+        return Set.copyOf(keys);
+    }
 
     /** @return {@link #IDENTITY_KEYS} and an intake's own keys: the keys it accepts */
     public static Set<String> keysWith(String... own) {
@@ -70,9 +76,12 @@ public final class RunFields {
      */
     public static RunMetadata metadata(JsonNode root, String source) {
         try {
+            @SuppressWarnings("unchecked")
+            Map<String, Object> tree = root.isObject() ? TREE.convertValue(root, Map.class) : Map.of();
             return new RunMetadata(text(root, "run_id", source, true), text(root, "robot_id", source, false),
                     text(root, "sequence", source, false), text(root, "method", source, false), seed(root, source),
-                    labels(root, source));
+                    labels(root, source), org.trajeval.core.options.RunMetadata.parse(tree, "", source),
+                    org.trajeval.core.options.RunResources.parse(tree.get("resources"), "resources", source));
         } catch (InputException e) {
             throw new InputException(source, 0, e.column(), e.problem(), e.detail(), e.found(), e);
         }
