@@ -98,7 +98,8 @@ class SettingsAcrossFrontEndsTest {
                 new Case("KITTI 00 with times files", r.resolve("KITTI_00_gt.txt"), r.resolve("KITTI_00_ORB.txt"),
                         settings("convention", "kitti", "ref_times", "KITTI_00_gt_times.txt", "est_times",
                         "KITTI_00_gt_times.txt", "alignment", "se3", "project_to_plane", "xz", "drift", "true",
-                        "drift_segment_lengths_m", "100,200,400", "drift_step_frames", "5", "overlap", "strict"),
+                        "drift_segment_lengths_m", "100,200,400", "drift_step_frames", "5", "overlap", "strict",
+                        "subtraj_lengths_m", "100,400"),
                         false),
                 new Case("planar CSV, ms, own columns", planar.resolve("gt.txt"), planar.resolve("est.txt"),
                         settings("format", "csv", "time_unit", "ms", "columns", "time,px,py,heading", "delimiter", ";",
@@ -111,7 +112,7 @@ class SettingsAcrossFrontEndsTest {
                 // two topics of one ROS 2 bag (an inline Kafka event carries text files only: no bag)
                 new Case("nav2 MCAP topics", r.resolve("ros/nav2_turtlebot.mcap"), r.resolve("ros/nav2_turtlebot.mcap"),
                         settings("ref_topic", "/amcl_pose", "est_topic", "/odom", "stamps", "header", "pose_field",
-                        "pose.pose", "alignment", "se3"), false));
+                        "pose.pose", "alignment", "se3", "bag_crc", "all"), false));
     }
 
     /** A seeded planar pair with ms stamps, ';' delimiter, own column names and one swapped line (needs sort). */

@@ -31,7 +31,7 @@ public final class DbCommand implements Runnable {
     /** {@code trajeval db import DIR... --db URL [--tag KEY=VALUE]}. */
     @Command(name = "import", mixinStandardHelpOptions = true, sortOptions = false,
             description = {"Records every trajeval report under the folders (pipeline reports/RUN_ID.json, suite "
-                + "report.json) in the store. Results already stored are left as they are, so an import can be "
+                + "report.json, eval --out reports) in the store. Results already stored are left as they are, so an import can be "
                 + "repeated, run beside a live pipeline, or rebuild a lost store from the report files."},
             exitCodeListHeading = "%nExit codes:%n",
             exitCodeList = {"0:success", "1:internal error (a bug; rerun with --verbose)",
@@ -47,8 +47,8 @@ public final class DbCommand implements Runnable {
         StoreOptions store = new StoreOptions();
 
         @Option(names = "--tag", paramLabel = "KEY=VALUE", description = {"Label every imported result "
-            + "(repeatable): software_version, robot, site, route fill their columns where the report has none; "
-            + "other keys are free tags."})
+            + "(repeatable): software_version, robot, site, route, method, seed fill their columns where the report "
+            + "has none (an eval report has no method or seed of its own); other keys are free tags."})
         List<String> tags = new ArrayList<>();
 
         @Option(names = "--verbose", description = "Print stack traces of errors.")
@@ -59,7 +59,7 @@ public final class DbCommand implements Runnable {
             if (!store.given()) {
                 throw UsageProblem.of("db import: --db is required");
             }
-            Labels labels = Labels.parse(tags);
+            Labels labels = Labels.parse(tags, Labels.EVAL_COLUMNS);
             PrintWriter out = spec.commandLine().getOut();
             try (ResultsStore s = store.open()) {
                 for (Path root : roots) {

@@ -40,14 +40,16 @@ import picocli.CommandLine.Model.CommandSpec;
                 + "in a suite manifest's metrics, a run.yaml and a Kafka run event."},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success", "1:internal error (a bug; rerun with --verbose)",
-            "2:bad input or usage (one line names file, line and what was expected)"})
+            "2:bad input or usage (one line names file, line and what was expected); with --db also a store "
+                + "that cannot be opened or written",
+            "4:--batch: some pairs could not be scored (failed rows of summary.csv, one stderr line each)"})
 public final class EvalCommand implements Callable<Integer> {
 
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "REF", description = "Reference (ground-truth) trajectory file, or a ROS "
-            + "bag (with --ref-topic, or written BAG:TOPIC).")
+    @Parameters(index = "0", arity = "0..1", paramLabel = "REF", description = "Reference (ground-truth) trajectory "
+            + "file, or a ROS bag (with --ref-topic, or written BAG:TOPIC).")
     Path reference;
 
     @Parameters(index = "1", arity = "0..1", paramLabel = "EST", description = "Estimated trajectory file, or a bag "
@@ -72,16 +74,41 @@ public final class EvalCommand implements Callable<Integer> {
     PlotOptions plots = new PlotOptions();
 
     @Option(names = "--threads", paramLabel = "N", converter = BoundedOptions.Threads.class, description = "Threads for reading the two files at once and "
-            + "for the element-wise passes of the planar evaluation (default: ${DEFAULT-VALUE}; 1 does everything on "
+            + "for the element-wise passes of the evaluation; with --batch, pairs scored at once (default: ${DEFAULT-VALUE}; 1 does everything on "
             + "one thread). The numbers do not depend on it.", defaultValue = "2")
     int threads;
+
+    @picocli.CommandLine.Mixin
+    EvalRecording recording = new EvalRecording();
 
     @Option(names = "--verbose", description = "Print stack traces of errors.")
     boolean verbose;
 
+    @Option(names = "--batch", paramLabel = "PAIRS.csv", description = "Score every pair of a CSV table in this one "
+            + "process instead of REF EST: columns ref and est (paths relative to the table's folder), optional name "
+            + "(the report's file name), columns named as settings (alignment, max_diff_s, ...) for that row; other "
+            + "columns are copied to the summary. Needs --reports.")
+    Path batch;
+
+    @Option(names = "--reports", paramLabel = "DIR", description = "--batch: folder for one report per pair (NAME.json, "
+            + "or line-NNNN.json) and summary.csv (the column names of a suite's runs.csv).")
+    Path reports;
+
     @Override
     public Integer call() {
         List<SettingText> given = new ArrayList<>(SettingOptions.given(spec.commandLine().getParseResult()));
+        if (batch != null) {
+            if (reference != null || estimate != null || out != null || json || plots.wanted()) {
+                throw UsageProblem.of("--batch", "--batch reads the pairs from its table: give no REF EST, --out, "
+                        + "--json or plot options with it", null);
+            }
+            return EvalBatch.run(batch, reports, SettingValues.of(given, null), limits(), threads,
+                    spec.commandLine().getOut(), spec.commandLine().getErr());
+        }
+        if (reference == null) {
+            throw UsageProblem.of("REF", "REF is missing: give a reference and an estimate file (or --batch PAIRS.csv)",
+                    null);
+        }
         reference = bagTopic(reference, Setting.REF_TOPIC, "REF", given);
         if (estimate == null) {
             boolean oneBag = Bags.kind(reference) != null && given.stream().anyMatch(t -> t.key().equals(
@@ -94,6 +121,7 @@ public final class EvalCommand implements Callable<Integer> {
         }
         estimate = bagTopic(estimate, Setting.EST_TOPIC, "EST", given);
         SettingValues settings = SettingValues.of(given, null);
+        org.trajeval.store.Labels labels = recording.labels();
         List<Path> inputs = Stream.of(reference, estimate, path(settings, Setting.REF_TIMES),
                 path(settings, Setting.EST_TIMES)).filter(Objects::nonNull).toList();
         if (out != null) {
@@ -106,11 +134,7 @@ public final class EvalCommand implements Callable<Integer> {
             OutputGuard.refuseFolderOfInputs(plots.seriesDir, "--save-series", inputs);
         }
         MemoryBudget.check(reference, estimate, Runtime.getRuntime().maxMemory());
-        ReadOptions limits = ReadOptions.defaults();
-        if (maxPoses != null || maxBytes != null) {
-            limits = limits.withLimits(maxBytes != null ? maxBytes : limits.maxBytes(),
-                    maxPoses != null ? maxPoses : limits.maxPoses());
-        }
+        ReadOptions limits = limits();
         EvaluationReport report;
         List<String> notices;
         try (EvalThreads work = new EvalThreads(threads)) {
@@ -124,7 +148,8 @@ public final class EvalCommand implements Callable<Integer> {
             FormatApplicability.check(settings, ref, reference.toString(), est, estimate.toString());
             EvaluationOptions options = SettingsResolver.evaluationOptions(settings,
                     DataKind.of(ref.trajectory(), est.trajectory()));
-            report = plots.wanted() ? EvalPlots.write(ref, est, options, plots, spec.commandLine().getErr())
+            report = plots.wanted() ? EvalPlots.write(ref, est, options,
+                    SettingsResolver.subTrajectoryLengthsM(settings), plots, spec.commandLine().getErr())
                     : Evaluator.evaluate(ref, est, options, work.parallelism());
             notices = EvalNotices.of(report, options, (Integer) settings.get(Setting.N_TO_ALIGN));
         }
@@ -134,9 +159,13 @@ public final class EvalCommand implements Callable<Integer> {
         }
         err.flush();
         // JSON (and Jackson's start-up) only when asked for
-        String jsonText = json || out != null ? ReportJson.toJson(report) : null;
+        String jsonText = json || out != null || recording.wanted() ? ReportJson.toJson(report) : null;
         if (out != null) {
             ReportJson.writeAtomically(out, jsonText + "\n");
+        }
+        if (recording.wanted()) {
+            recording.record(jsonText, out != null ? out.toString() : reference + " " + estimate, labels,
+                    java.time.Clock.systemUTC(), err);
         }
         PrintWriter o = spec.commandLine().getOut();
         if (json && out == null) {
@@ -146,6 +175,15 @@ public final class EvalCommand implements Callable<Integer> {
         }
         o.flush();
         return ExitCodes.OK;
+    }
+
+    private ReadOptions limits() {
+        ReadOptions limits = ReadOptions.defaults();
+        if (maxPoses != null || maxBytes != null) {
+            limits = limits.withLimits(maxBytes != null ? maxBytes : limits.maxBytes(),
+                    maxPoses != null ? maxPoses : limits.maxPoses());
+        }
+        return limits;
     }
 
     /**

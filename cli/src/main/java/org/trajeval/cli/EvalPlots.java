@@ -1,12 +1,9 @@
 package org.trajeval.cli;
 
 import java.io.PrintWriter;
-import org.trajeval.core.eval.Evaluation;
 import org.trajeval.core.eval.EvaluationOptions;
-import org.trajeval.core.eval.Evaluator;
 import org.trajeval.core.io.LoadedTrajectory;
 import org.trajeval.core.report.EvaluationReport;
-import org.trajeval.core.report.EvaluationSeries;
 import org.trajeval.core.report.SavedEvaluation;
 import org.trajeval.figures.EvalPlotPage;
 
@@ -17,16 +14,15 @@ final class EvalPlots {
 
     /** Evaluates keeping the per-pose series, writes what the options ask for, returns the report. */
     static EvaluationReport write(LoadedTrajectory ref, LoadedTrajectory est, EvaluationOptions options,
-            PlotOptions plots, PrintWriter err) {
-        Evaluation e = Evaluator.run(ref, est, options);
-        boolean frames = ref.indexTimestamps() || est.indexTimestamps();
-        SavedEvaluation saved = new SavedEvaluation(e.report(), EvaluationSeries.of(e, frames));
+            double[] subTrajectoryLengthsM, PlotOptions plots, PrintWriter err) {
+        SavedEvaluation saved = SavedEvaluation.score(ref, est, options, subTrajectoryLengthsM);
         if (plots.seriesDir != null) {
             saved.write(plots.seriesDir);
         }
         if (plots.plotDir != null) {
-            EvalPlotPage.write(saved, plots.plane, plots.plotDir, ProgressBar.counter(err, "figures"));
+            EvalPlotPage.write(saved, plots.plane, plots.plotDir, plots.formats,
+                    ProgressBar.counter(err, "figures"));
         }
-        return e.report();
+        return saved.report();
     }
 }

@@ -10,6 +10,8 @@ public final class ExitCodes {
     public static final int BAD_INPUT = 2;
     /** {@code splits check}: leakage found. */
     public static final int LEAKAGE = 3;
+    /** {@code eval --batch}: some pairs could not be scored (each a failed row of summary.csv). */
+    public static final int SOME_FAILED = 4;
     /** {@code gate}: a metric of the candidate regressed beyond its tolerance. */
     public static final int REGRESSION = 5;
 

@@ -7,10 +7,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
-import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 import java.util.concurrent.Callable;
 import org.trajeval.core.protocol.RegressionGate;
 import org.trajeval.core.protocol.RegressionGate.Finding;
@@ -18,11 +16,11 @@ import org.trajeval.core.protocol.RegressionGate.Verdict;
 import org.trajeval.core.protocol.SuiteAnalysis;
 import org.trajeval.core.report.ReportJson;
 import org.trajeval.core.report.SuiteReport;
-import org.trajeval.core.report.SuiteReport.RunEntry;
 import org.trajeval.core.report.SuiteReportFiles;
+import org.trajeval.store.GatePairing;
 import org.trajeval.store.ResultsStore;
-import org.trajeval.store.RunRecord;
 import org.trajeval.store.Selection;
+import org.trajeval.store.StoredGate;
 import org.trajeval.store.StoredMetric;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -51,14 +49,6 @@ import picocli.CommandLine.Spec;
 public final class GateCommand implements Callable<Integer> {
     /** The default tolerance of every gated metric (5 %). */
     static final double DEFAULT_TOLERANCE = 0.05;
-
-    /** How stored runs are paired in --db mode. */
-    enum PairBy {
-        /** By (route, seed), as suite runs are. */
-        ROUTE_SEED,
-        /** By (robot, route), every run of a robot on a route averaged. */
-        ROBOT_ROUTE
-    }
 
     @Spec
     CommandSpec spec;
@@ -99,7 +89,7 @@ public final class GateCommand implements Callable<Integer> {
     @Option(names = "--pair-by", paramLabel = "KEY", defaultValue = "route-seed",
             converter = PairByConverter.class,
             description = "With --db: pair runs by route-seed or robot-route (default: ${DEFAULT-VALUE}).")
-    PairBy pairBy;
+    GatePairing pairBy;
 
     @Option(names = "--seed", paramLabel = "N", defaultValue = "1", description = "Bootstrap seed (default: ${DEFAULT-VALUE}).")
     long seed;
@@ -111,9 +101,8 @@ public final class GateCommand implements Callable<Integer> {
     @Option(names = "--verbose", description = "Print stack traces of errors.")
     boolean verbose;
 
-    /** Both sides' runs, the methods and sequences to gate, and the default metrics. */
-    private record Sides(List<RunEntry> baseline, List<RunEntry> candidate, List<String> methods,
-            List<String> sequences, List<String> defaultMetrics, String baselineName, String candidateName) {
+    /** The findings, how many sequences the baseline has, and the two sides' names. */
+    private record Gated(List<Finding> findings, int sequences, String baselineName, String candidateName) {
     }
 
     @Override
@@ -121,16 +110,14 @@ public final class GateCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         RegressionGate.Settings settings = new RegressionGate.Settings(confidence, seed, resamples);
-        Sides sides = store.given() ? fromStore() : fromFiles(err);
-        Map<String, Double> tolerances = tolerances(sides.defaultMetrics());
-        List<Finding> findings = RegressionGate.gateAll(sides.baseline(), sides.candidate(), sides.methods(),
-                sides.sequences(), tolerances, settings);
+        Gated sides = store.given() ? fromStore(settings) : fromFiles(err, settings);
+        List<Finding> findings = sides.findings();
         if (findings.stream().allMatch(f -> f.n() == 0)) {
             throw UsageProblem.of("gate: baseline and candidate have no (sequence, seed) in common: "
                     + "nothing to pair");
         }
         out.println("baseline " + sides.baselineName() + ", candidate " + sides.candidateName() + "; "
-                + sides.sequences().size() + " sequences");
+                + sides.sequences() + " sequences");
         GateOutput.table(findings, confidence, out);
         out.flush();
         java.util.List<Path> inputs = new java.util.ArrayList<>();
@@ -157,7 +144,7 @@ public final class GateCommand implements Callable<Integer> {
                 : ExitCodes.OK;
     }
 
-    private Sides fromFiles(PrintWriter err) {
+    private Gated fromFiles(PrintWriter err, RegressionGate.Settings settings) {
         if (baselinePath == null || candidatePath == null) {
             throw UsageProblem.of("gate: give BASELINE and CANDIDATE suite reports, or --db with "
                     + "--baseline and --candidate");
@@ -193,11 +180,12 @@ public final class GateCommand implements Callable<Integer> {
             }
         }
         err.flush();
-        return new Sides(b.runs(), c.runs(), methods, sequences, metrics, baselinePath.toString(),
-                candidatePath.toString());
+        List<Finding> findings = RegressionGate.gateAll(b.runs(), c.runs(), methods, sequences, tolerances(metrics),
+                settings);
+        return new Gated(findings, sequences.size(), baselinePath.toString(), candidatePath.toString());
     }
 
-    private Sides fromStore() {
+    private Gated fromStore(RegressionGate.Settings settings) {
         if (baselinePath != null || candidatePath != null) {
             throw UsageProblem.of("gate: with --db, select the two sides with --baseline and "
                     + "--candidate instead of report files");
@@ -208,45 +196,12 @@ public final class GateCommand implements Callable<Integer> {
         }
         Selection bs = Selection.parse(baselineSelection, "--baseline");
         Selection cs = Selection.parse(candidateSelection, "--candidate");
-        List<RunEntry> b;
-        List<RunEntry> c;
+        Map<String, Double> tolerances = tolerances(List.of("ate_trans_rmse_m", "rpe_trans_rmse_m"));
+        StoredGate.Result r;
         try (ResultsStore s = store.open()) {
-            b = entries(s.select(bs, false));
-            c = entries(s.select(cs, false));
+            r = StoredGate.gate(s, bs, cs, pairBy, tolerances, settings);
         }
-        if (b.isEmpty() || c.isEmpty()) {
-            throw UsageProblem.of("gate: no stored run matches " + (b.isEmpty() ? "--baseline "
-                    + bs : "--candidate " + cs));
-        }
-        Set<String> seqs = new java.util.TreeSet<>();
-        b.forEach(r -> seqs.add(r.sequence()));
-        Set<String> methods = new LinkedHashSet<>();
-        Set<String> baseMethods = new LinkedHashSet<>();
-        b.forEach(r -> baseMethods.add(r.method()));
-        c.stream().map(RunEntry::method).filter(baseMethods::contains).forEach(methods::add);
-        if (methods.isEmpty()) {
-            throw UsageProblem.of("gate: the candidate runs have no method of the baseline runs "
-                    + baseMethods);
-        }
-        return new Sides(b, c, List.copyOf(methods), List.copyOf(seqs),
-                List.of("ate_trans_rmse_m", "rpe_trans_rmse_m"), "--baseline " + bs, "--candidate " + cs);
-    }
-
-    /** Stored runs as suite run entries: route (or robot/route) as the sequence. */
-    private List<RunEntry> entries(List<RunRecord> records) {
-        List<RunEntry> out = new ArrayList<>();
-        for (RunRecord r : records) {
-            String method = r.method() == null ? "-" : r.method();
-            String route = r.route() == null ? "-" : r.route();
-            String sequence = pairBy == PairBy.ROBOT_ROUTE ? (r.robot() == null ? "-" : r.robot()) + "/" + route
-                    : route;
-            long s = pairBy == PairBy.ROBOT_ROUTE || r.seed() == null ? 0 : r.seed();
-            Map<String, Double> metrics = new LinkedHashMap<>(r.metrics());
-            double score = r.metric(StoredMetric.SCORE);
-            out.add(new RunEntry(method, sequence, s, "test", null, r.ok() ? "ok" : "failed", null,
-                    metrics.get(StoredMetric.COVERAGE), metrics, score, null));
-        }
-        return out;
+        return new Gated(r.findings(), r.baselineSequences(), "--baseline " + bs, "--candidate " + cs);
     }
 
     private Map<String, Double> tolerances(List<String> defaults) {
@@ -287,10 +242,10 @@ public final class GateCommand implements Callable<Integer> {
     }
 
     /** route-seed|robot-route. */
-    static final class PairByConverter implements picocli.CommandLine.ITypeConverter<PairBy> {
+    static final class PairByConverter implements picocli.CommandLine.ITypeConverter<GatePairing> {
         @Override
-        public PairBy convert(String v) {
-            return EnumWords.parse(PairBy.class, v, "route-seed|robot-route");
+        public GatePairing convert(String v) {
+            return EnumWords.parse(GatePairing.class, v, "route-seed|robot-route");
         }
     }
 }

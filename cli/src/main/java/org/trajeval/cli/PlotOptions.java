@@ -15,6 +15,11 @@ final class PlotOptions {
             + "${DEFAULT-VALUE}: the two axes of largest extent, x-z for KITTI's camera frame).")
     org.trajeval.figures.PlotPlane plane;
 
+    @Option(names = "--plot-format", paramLabel = "svg,png,pdf", defaultValue = "svg,png",
+            converter = PlotOptions.FormatsConverter.class, description = "Files of each figure of --plot (default: "
+            + "${DEFAULT-VALUE}); pdf: one vector page per figure (PDF 1.4, Helvetica), for papers.")
+    java.util.Set<org.trajeval.figures.FigureFormat> formats;
+
     @Option(names = "--save-series", paramLabel = "DIR", description = "Save the evaluation into DIR: report.json, "
             + "poses.csv.gz (time, reference and aligned estimate positions (m), ATE (m, rad) per pose) and "
             + "pairs.csv.gz (RPE (m, rad) per pair); pandas reads each with pd.read_csv. trajeval res reads DIR.")
@@ -30,6 +35,19 @@ final class PlotOptions {
                 }
             }
             throw new picocli.CommandLine.TypeConversionException("expected auto|xy|xz|yz, found \"" + v + "\"");
+        }
+    }
+
+    /** Reads a comma list of svg, png and pdf. */
+    static final class FormatsConverter
+            implements picocli.CommandLine.ITypeConverter<java.util.Set<org.trajeval.figures.FigureFormat>> {
+        @Override
+        public java.util.Set<org.trajeval.figures.FigureFormat> convert(String v) {
+            try {
+                return org.trajeval.figures.FigureFormat.parseList(v);
+            } catch (IllegalArgumentException e) {
+                throw new picocli.CommandLine.TypeConversionException(e.getMessage());
+            }
         }
     }
 

@@ -41,6 +41,11 @@ public final class ResCommand implements Callable<Integer> {
             + "errors over time overlaid into DIR (SVG, PNG, index.html).")
     Path plotDir;
 
+    @Option(names = "--plot-format", paramLabel = "svg,png,pdf", defaultValue = "svg,png",
+            converter = PlotOptions.FormatsConverter.class, description = "Files of each figure of --plot (default: "
+            + "${DEFAULT-VALUE}); pdf: one vector page per figure, for papers.")
+    java.util.Set<org.trajeval.figures.FigureFormat> formats;
+
     @Option(names = "--confidence", paramLabel = "LEVEL", defaultValue = "0.95",
             description = "Level of the t-interval over seeds (default: ${DEFAULT-VALUE}).")
     double level;
@@ -89,7 +94,7 @@ public final class ResCommand implements Callable<Integer> {
             }
             list.append("</ul>\n<div class=\"scroll\"><pre>").append(FigurePage.esc(ResTable.render(results,
                     ResTable.Format.TABLE, level))).append("</pre></div>\n");
-            FigurePage.write("Saved results compared", list.toString(), ResFigures.of(results), plotDir,
+            FigurePage.write("Saved results compared", list.toString(), ResFigures.of(results), plotDir, formats,
                     ProgressBar.counter(spec.commandLine().getErr(), "figures"));
         }
         return ExitCodes.OK;

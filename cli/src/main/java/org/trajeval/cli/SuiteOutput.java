@@ -105,6 +105,7 @@ final class SuiteOutput {
         out.println();
         CompareCommand.printComparisons(r.comparisons(), r.protocol().analysis().confidenceLevel(), out);
         printRankings(r.rankings(), out);
+        SimRealOutput.print(r, out);
     }
 
     /** Prints, per metric, the Friedman and Iman-Davenport tests, the average ranks and the groups. */

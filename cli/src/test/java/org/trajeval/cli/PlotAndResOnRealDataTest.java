@@ -61,6 +61,49 @@ class PlotAndResOnRealDataTest {
     }
 
     @Test
+    void subTrajectoryErrorsAreSavedAtTenToFiftyPercentOfThePathAndDrawnByEvalAndRes() {
+        SavedEvaluation s = SavedEvaluation.read(dir.resolve("orb"));
+        double path = s.report().drift().pathLengthM(); // the reference's path length (m), as the drift saw it
+        assertArrayEquals(new double[] {0.1 * path, 0.2 * path, 0.3 * path, 0.4 * path, 0.5 * path},
+                s.series().segments().lengths(), 1e-9);
+        assertTrue(Files.isRegularFile(dir.resolve("orb-plots/subtraj_trans.svg")));
+        assertTrue(Files.isRegularFile(dir.resolve("orb-plots/subtraj_rot.png")));
+        SuiteCommandsTest.Run r = SuiteCommandsTest.run("res", "orb=" + dir.resolve("orb"),
+                "evo=" + refdata.resolve("evo_results/orb_ape.zip"), "--plot", dir.resolve("res-sub").toString());
+        assertEquals(0, r.code(), r.err());
+        assertTrue(Files.isRegularFile(dir.resolve("res-sub/subtraj_trans.svg")));
+    }
+
+    @Test
+    void givenSubTrajectoryLengthsAreTheOnesSaved() {
+        SuiteCommandsTest.Run r = SuiteCommandsTest.run("eval", refdata.resolve("KITTI_00_gt.txt").toString(),
+                refdata.resolve("KITTI_00_SPTAM.txt").toString(), "--align", "se3", "--subtraj-lengths", "100,400",
+                "--save-series", dir.resolve("sptam-lengths").toString());
+        assertEquals(0, r.code(), r.err());
+        assertArrayEquals(new double[] {100, 400},
+                SavedEvaluation.read(dir.resolve("sptam-lengths")).series().segments().lengths());
+    }
+
+    @Test
+    void plotFormatPdfWritesAVectorPagePerFigureInsteadOfPng() throws Exception {
+        Path out = dir.resolve("pdf-plots");
+        SuiteCommandsTest.Run r = SuiteCommandsTest.run("eval", refdata.resolve("KITTI_00_gt.txt").toString(),
+                refdata.resolve("KITTI_00_ORB.txt").toString(), "--align", "se3", "--plot", out.toString(),
+                "--plot-format", "pdf,svg");
+        assertEquals(0, r.code(), r.err());
+        byte[] pdf = Files.readAllBytes(out.resolve("trajectories.pdf"));
+        assertEquals("%PDF-1.4", new String(pdf, 0, 8, java.nio.charset.StandardCharsets.ISO_8859_1));
+        assertTrue(Files.isRegularFile(out.resolve("subtraj_rot.pdf")));
+        assertTrue(Files.isRegularFile(out.resolve("ate_trans.svg")));
+        assertTrue(!Files.exists(out.resolve("ate_trans.png")));
+        assertTrue(Files.readString(out.resolve("index.html")).contains("<a href=\"ate_trans.pdf\">PDF</a>"));
+        SuiteCommandsTest.Run bad = SuiteCommandsTest.run("eval", refdata.resolve("KITTI_00_gt.txt").toString(),
+                refdata.resolve("KITTI_00_ORB.txt").toString(), "--plot", out.toString(), "--plot-format", "eps");
+        assertEquals(ExitCodes.BAD_INPUT, bad.code(), bad.err());
+        assertTrue(bad.err().contains("expected a comma list of svg, png and pdf, found \"eps\""), bad.err());
+    }
+
+    @Test
     void evoApeArchiveHoldsTrajevalsPerPoseErrors() {
         ResultSet evo = SavedResults.read(refdata.resolve("evo_results/orb_ape.zip"), "evo");
         ResultSet ours = SavedResults.read(dir.resolve("orb"), "trajeval");

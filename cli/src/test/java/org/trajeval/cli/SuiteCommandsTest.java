@@ -51,6 +51,17 @@ class SuiteCommandsTest {
             "ranks_score.svg", "ranks_ate_trans_rmse_m.svg"}) {
             assertTrue(Files.isRegularFile(dir.resolve("out").resolve(f)), f);
         }
+        // every figure of the page also as a vector PDF beside its SVG, for a paper
+        Path figures = dir.resolve("out").resolve(org.trajeval.figures.SuiteHtml.FIGURES);
+        try (java.util.stream.Stream<Path> s = Files.list(figures)) {
+            java.util.List<String> svgs = s.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".svg")).toList();
+            assertTrue(!svgs.isEmpty());
+            for (String svg : svgs) {
+                assertTrue(Files.isRegularFile(figures.resolve(svg.replaceFirst("svg$", "pdf"))), svg);
+            }
+        } catch (IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
     }
 
     @Test

@@ -1,8 +1,8 @@
 package org.trajeval.figures;
 
 /**
- * The few drawing operations a figure needs, in pixels (origin top left). Two backends:
- * {@link SvgCanvas} (vector, for papers) and {@link RasterCanvas} (PNG).
+ * The few drawing operations a figure needs, in pixels (origin top left). Three backends:
+ * {@link SvgCanvas} and {@link PdfCanvas} (vector, for papers) and {@link RasterCanvas} (PNG).
  */
 interface Canvas {
     /** Text anchor. */

@@ -11,8 +11,9 @@ import org.trajeval.core.report.SavedEvaluation;
  * The figures of one evaluation ({@code trajeval eval --plot}), built from the report and its
  * series alone, so they can be redrawn from a saved folder without rescoring:
  * trajectories (estimate coloured by ATE), ATE and RPE translation and rotation over time with
- * mean, median, RMSE and a mean +- std band, a histogram of each error, and KITTI drift per
- * segment length when drift was computed. Rotations are drawn in degrees, as readers expect.
+ * mean, median, RMSE and a mean +- std band, a histogram of each error, KITTI drift per
+ * segment length when drift was computed, and box plots of the relative error per sub-trajectory
+ * length when the series hold segments. Rotations are drawn in degrees, as readers expect.
  */
 public final class EvalFigures {
     static final int REFERENCE = 0x444444;
@@ -50,6 +51,7 @@ public final class EvalFigures {
         if (r.drift() != null && !r.drift().perLength().isEmpty()) {
             out.addAll(drift(r.drift()));
         }
+        out.addAll(SubTrajectoryFigures.of(List.of(new SubTrajectoryFigures.Named(null, ERROR, s.segments()))));
         return out;
     }
 

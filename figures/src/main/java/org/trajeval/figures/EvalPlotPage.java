@@ -8,7 +8,9 @@ import org.trajeval.core.report.SavedEvaluation;
 
 /**
  * The plots of one evaluation as a {@link FigurePage}: every figure as SVG and PNG, and
- * {@code index.html} with the numbers table above the figures.
+ * {@code index.html} with the numbers table above the figures: inputs, association, alignment,
+ * coverage and the longest stretch without an estimate pose, the report's warnings, the error
+ * statistics and KITTI drift.
  */
 public final class EvalPlotPage {
     /** File name of the page. */
@@ -24,9 +26,15 @@ public final class EvalPlotPage {
      * @return the figures written, in page order
      */
     public static List<Figure> write(SavedEvaluation saved, PlotPlane plane, Path dir, FigurePage.Progress progress) {
+        return write(saved, plane, dir, FigureFormat.DEFAULT, progress);
+    }
+
+    /** As above, every figure in the given formats. */
+    public static List<Figure> write(SavedEvaluation saved, PlotPlane plane, Path dir,
+            java.util.Set<FigureFormat> formats, FigurePage.Progress progress) {
         List<Figure> figures = EvalFigures.of(saved, plane);
         EvaluationReport r = saved.report();
-        FigurePage.write("Evaluation: " + r.inputs().estimate().path(), numbers(r), figures, dir, progress);
+        FigurePage.write("Evaluation: " + r.inputs().estimate().path(), numbers(r), figures, dir, formats, progress);
         return figures;
     }
 
@@ -42,7 +50,9 @@ public final class EvalPlotPage {
                 .append(" matched, ").append(r.association().dropped()).append(" estimate poses dropped), ")
                 .append(SvgCanvas.escape(EvalFigures.alignment(r))).append("; RPE ")
                 .append(SvgCanvas.escape(EvalFigures.rpeHorizon(r.rpe()))).append(", ").append(r.rpe().pairs())
-                .append(" pairs.</p>\n<div class=\"scroll\"><table><thead><tr><th class=\"l\">error</th>")
+                .append(" pairs.</p>\n");
+        coverage(h, r);
+        h.append("<div class=\"scroll\"><table><thead><tr><th class=\"l\">error</th>")
                 .append("<th>RMSE</th><th>mean</th><th>median</th><th>std</th><th>min</th><th>max</th><th>n</th>")
                 .append("</tr></thead><tbody>\n");
         row(h, "ATE translation (m)", r.ate().transM(), 1);
@@ -56,6 +66,34 @@ public final class EvalPlotPage {
                     .append(num(r.drift().rotDegPerM(), 100)).append(" deg/100 m.</p>\n");
         }
         return h.toString();
+    }
+
+    /** Coverage, the longest stretch without an estimate pose, and the report's warnings, as the report gives them. */
+    private static void coverage(StringBuilder h, EvaluationReport r) {
+        EvaluationReport.CoverageInfo c = r.coverage();
+        String unit = "frames".equals(r.timeBase()) ? " frames" : " s";
+        if (c != null) {
+            h.append("<p>coverage ").append(String.format(Locale.ROOT, "%.1f", 100 * c.fraction()))
+                    .append(" % of the reference's ").append(ms(c.referenceSpanS()))
+                    .append(unit).append("; longest stretch without an estimate pose ")
+                    .append(ms(c.longestGapS())).append(unit).append(" from ")
+                    .append(ms(c.longestGapStartS())).append(unit)
+                    .append(" (reference clock); ").append(ms(c.uncoveredS()))
+                    .append(unit).append(" uncovered in all.</p>\n");
+        }
+        if (!r.warnings().isEmpty()) {
+            h.append("<div class=\"warn\"><b>Warnings</b><ul>\n");
+            for (EvaluationReport.Warning w : r.warnings()) {
+                h.append("<li><code>").append(SvgCanvas.escape(w.code())).append("</code>: ")
+                        .append(SvgCanvas.escape(w.message())).append("</li>\n");
+            }
+            h.append("</ul></div>\n");
+        }
+    }
+
+    /** @return a time to the millisecond, without trailing zeros (1300, 8.25, 1305.031) */
+    private static String ms(double v) {
+        return java.math.BigDecimal.valueOf(Math.round(v * 1000) / 1000.0).stripTrailingZeros().toPlainString();
     }
 
     private static void row(StringBuilder h, String name, EvaluationReport.Stats s, double f) {

@@ -3,7 +3,7 @@ package org.trajeval.figures;
 import java.nio.file.Path;
 import org.trajeval.core.report.ReportJson;
 
-/** Renders a {@link Figure} as SVG (vector, for papers) and PNG (for pages and READMEs). */
+/** Renders a {@link Figure} as SVG and PDF (vector, for papers) and PNG (for pages and READMEs). */
 public final class FigureFiles {
     private FigureFiles() {
     }
@@ -20,6 +20,13 @@ public final class FigureFiles {
         RasterCanvas c = new RasterCanvas(FigurePainter.WIDTH, FigurePainter.HEIGHT, scale);
         FigurePainter.paint(f, c);
         return c.png();
+    }
+
+    /** @return the figure as a one-page vector PDF (1.4; points as layout pixels, Helvetica text) */
+    public static byte[] pdf(Figure f) {
+        PdfCanvas c = new PdfCanvas(FigurePainter.WIDTH, FigurePainter.HEIGHT);
+        FigurePainter.paint(f, c);
+        return c.finish();
     }
 
     /** Writes {@code NAME.svg} and {@code NAME.png} into {@code dir} (each atomically). */

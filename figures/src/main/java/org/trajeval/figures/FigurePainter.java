@@ -19,6 +19,8 @@ final class FigurePainter {
     private static final int GRID = 0xe4e4e4;
     private static final int FRAME = 0x444444;
     private static final int COLOUR_LEVELS = 64;
+    /** Points closer than this to the last drawn one, in both directions, are not drawn (px). */
+    static final double THIN_PX = 0.5;
 
     private FigurePainter() {
     }
@@ -98,7 +100,7 @@ final class FigurePainter {
     private static void layer(Canvas c, Mapping m, Layer l, ColourScale scale) {
         if (l instanceof Layer.Line line) {
             double[][] p = m.points(line.x(), line.y());
-            c.polyline(p[0], p[1], p[0].length, line.rgb(), line.width(), line.dashed());
+            c.polyline(p[0], p[1], thin(p[0], p[1], p[0].length), line.rgb(), line.width(), line.dashed());
         } else if (l instanceof Layer.Gradient g) {
             gradient(c, m, g, scale);
         } else if (l instanceof Layer.Rule r) {
@@ -130,46 +132,89 @@ final class FigurePainter {
             }
         } else if (l instanceof Layer.Boxes bs) {
             for (int i = 0; i < bs.boxes().size(); i++) {
-                box(c, m, i + 1, bs.boxes().get(i));
+                box(c, m, bs.at()[i], bs.halfWidth(), bs.boxes().get(i));
             }
         }
     }
 
-    private static void box(Canvas c, Mapping m, double at, Layer.Box b) {
-        double x0 = m.x(at - 0.25);
-        double x1 = m.x(at + 0.25);
+    private static void box(Canvas c, Mapping m, double at, double half, Layer.Box b) {
+        double x0 = m.x(at - half);
+        double x1 = m.x(at + half);
         double xm = m.x(at);
+        double cap = 0.4 * half;
         c.polyline(new double[] {xm, xm}, new double[] {m.y(b.low()), m.y(b.q1())}, 2, FRAME, 1.2f, false);
         c.polyline(new double[] {xm, xm}, new double[] {m.y(b.q3()), m.y(b.high())}, 2, FRAME, 1.2f, false);
-        c.polyline(new double[] {m.x(at - 0.1), m.x(at + 0.1)}, new double[] {m.y(b.low()), m.y(b.low())}, 2, FRAME,
+        c.polyline(new double[] {m.x(at - cap), m.x(at + cap)}, new double[] {m.y(b.low()), m.y(b.low())}, 2, FRAME,
                 1.2f, false);
-        c.polyline(new double[] {m.x(at - 0.1), m.x(at + 0.1)}, new double[] {m.y(b.high()), m.y(b.high())}, 2,
+        c.polyline(new double[] {m.x(at - cap), m.x(at + cap)}, new double[] {m.y(b.high()), m.y(b.high())}, 2,
                 FRAME, 1.2f, false);
         c.rect(x0, m.y(b.q3()), x1 - x0, Math.max(1, m.y(b.q1()) - m.y(b.q3())), b.rgb(), 0.6, FRAME);
         c.polyline(new double[] {x0, x1}, new double[] {m.y(b.median()), m.y(b.median())}, 2, 0x000000, 2f, false);
     }
 
-    /** Runs of consecutive points whose colours fall in the same of 64 levels become one polyline. */
+    /**
+     * The path is thinned first ({@link #thin}, each kept point keeping its own value), then runs
+     * of consecutive points whose colours fall in the same of 64 levels become one polyline.
+     */
     private static void gradient(Canvas c, Mapping m, Layer.Gradient g, ColourScale scale) {
-        int n = g.x().length;
+        int all = g.x().length;
+        double[] px = new double[all];
+        double[] py = new double[all];
+        double[] pv = g.value().clone();
+        for (int i = 0; i < all; i++) {
+            px[i] = m.x(g.x()[i]);
+            py[i] = m.y(g.y()[i]);
+        }
+        int n = thin(px, py, pv, all);
         double[] xs = new double[n];
         double[] ys = new double[n];
         int i = 0;
         while (i < n - 1) {
-            int level = level(scale, g.value()[i]);
+            int level = level(scale, pv[i]);
             int j = i;
             int k = 0;
-            xs[k] = m.x(g.x()[i]);
-            ys[k++] = m.y(g.y()[i]);
-            while (j < n - 1 && level(scale, g.value()[j]) == level) {
+            xs[k] = px[i];
+            ys[k++] = py[i];
+            while (j < n - 1 && level(scale, pv[j]) == level) {
                 j++;
-                xs[k] = m.x(g.x()[j]);
-                ys[k++] = m.y(g.y()[j]);
+                xs[k] = px[j];
+                ys[k++] = py[j];
             }
             double mid = scale.min() + (level + 0.5) / COLOUR_LEVELS * (scale.max() - scale.min());
             c.polyline(xs, ys, k, scale.rgb(mid), 2f, false);
             i = j;
         }
+    }
+
+    /** @return {@link #thin(double[], double[], double[], int)} without values */
+    static int thin(double[] x, double[] y, int n) {
+        return thin(x, y, null, n);
+    }
+
+    /**
+     * Drops, in place, every point closer than {@link #THIN_PX} in both directions to the last
+     * point kept (the last point is always kept): a line of 20 000 points across 600 px draws the
+     * same at a fraction of the cost, in PNG, SVG and PDF alike.
+     *
+     * @param v values carried along with the points (colours), or null
+     * @return the number of points kept, at the front of the arrays
+     */
+    static int thin(double[] x, double[] y, double[] v, int n) {
+        if (n < 3) {
+            return n;
+        }
+        int k = 1;
+        for (int i = 1; i < n; i++) {
+            if (i == n - 1 || Math.abs(x[i] - x[k - 1]) >= THIN_PX || Math.abs(y[i] - y[k - 1]) >= THIN_PX) {
+                x[k] = x[i];
+                y[k] = y[i];
+                if (v != null) {
+                    v[k] = v[i];
+                }
+                k++;
+            }
+        }
+        return k;
     }
 
     private static int level(ColourScale s, double v) {
@@ -195,6 +240,8 @@ final class FigurePainter {
             c.marker(x + 12, y, 9, p.shape(), p.rgb());
         } else if (l instanceof Layer.Bars b) {
             c.rect(x, y - 6, 24, 12, b.rgb(), 0.85, -1);
+        } else if (l instanceof Layer.Boxes bs && !bs.boxes().isEmpty()) {
+            c.rect(x, y - 6, 24, 12, bs.boxes().get(0).rgb(), 0.6, FRAME);
         } else {
             c.rect(x, y - 6, 24, 12, 0x9ecae1, 0.6, FRAME);
         }

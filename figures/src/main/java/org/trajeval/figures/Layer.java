@@ -66,8 +66,25 @@ public sealed interface Layer {
         }
     }
 
-    /** Box plots at categorical positions 1..n (Tukey: box Q1..Q3, whiskers to the last value within 1.5 IQR). */
-    record Boxes(String label, List<Box> boxes) implements Layer {
+    /**
+     * Box plots (Tukey: box Q1..Q3, whiskers to the last value within 1.5 IQR), box i at x = at[i]
+     * (categorical positions 1..n, or beside them for groups), halfWidth wide on each side.
+     */
+    record Boxes(String label, List<Box> boxes, double[] at, double halfWidth) implements Layer {
+        /** @throws IllegalArgumentException when positions and boxes differ in number */
+        public Boxes {
+            boxes = List.copyOf(boxes);
+            if (at.length != boxes.size() || !(halfWidth > 0)) {
+                throw new IllegalArgumentException("boxes '" + label + "': " + boxes.size() + " boxes, " + at.length
+                        + " positions, half width " + halfWidth);
+            }
+        }
+
+        /** Boxes at the categorical positions 1..n, 0.25 wide on each side. */
+        public Boxes(String label, List<Box> boxes) {
+            this(label, boxes, java.util.stream.IntStream.rangeClosed(1, boxes.size()).asDoubleStream().toArray(),
+                    0.25);
+        }
     }
 
     /**

@@ -10,7 +10,8 @@ import org.trajeval.core.report.ResultSet;
 /**
  * The figures of {@code trajeval res}: per error kind, box plots of the saved results side by
  * side (one box per result, coloured by name, so the seeds of one method share a colour) and the
- * errors over time overlaid. Rotations in degrees. Results saved without per-value errors (an
+ * errors over time overlaid, and the relative errors per sub-trajectory length (boxes per length,
+ * results side by side) when the results hold them. Rotations in degrees. Results saved without per-value errors (an
  * {@code eval --out} JSON) appear in the tables only.
  */
 public final class ResFigures {
@@ -69,6 +70,12 @@ public final class ResFigures {
                                 List.of()), Axis.fromZero(label, all.toArray(new double[0][])), lines, null, false));
             }
         }
+        List<SubTrajectoryFigures.Named> segments = new ArrayList<>();
+        for (ResultSet r : results) {
+            boolean first = segments.stream().noneMatch(n -> r.name().equals(n.name()));
+            segments.add(new SubTrajectoryFigures.Named(first ? r.name() : null, colour.get(r.name()), r.segments()));
+        }
+        out.addAll(SubTrajectoryFigures.of(segments));
         return out;
     }
 

@@ -35,7 +35,10 @@ public final class SuiteHtml {
     /** Folder (inside the report folder) of the figures as SVG files, for papers. */
     public static final String FIGURES = "figures";
 
-    /** Writes {@link #FILE} into {@code dir}, and every figure as {@code figures/NN_NAME.svg} (each atomically). */
+    /**
+     * Writes {@link #FILE} into {@code dir}, and every figure as {@code figures/NN_NAME.svg} and
+     * {@code figures/NN_NAME.pdf} (vector, for a paper; each atomically).
+     */
     public static void write(SuiteReport report, List<SequencePlot> plots, Path dir) {
         List<Figure> figures = figures(report, plots);
         Map<Figure, String> svg = new LinkedHashMap<>();
@@ -43,8 +46,9 @@ public final class SuiteHtml {
         for (Figure f : figures) {
             String text = FigureFiles.svg(f);
             svg.put(f, text);
-            ReportJson.writeAtomically(dir.resolve(FIGURES).resolve(String.format(Locale.ROOT, "%02d_%s.svg", ++i,
-                    f.name())), text);
+            String stem = String.format(Locale.ROOT, "%02d_%s", ++i, f.name());
+            ReportJson.writeAtomically(dir.resolve(FIGURES).resolve(stem + ".svg"), text);
+            ReportJson.writeAtomically(dir.resolve(FIGURES).resolve(stem + ".pdf"), FigureFiles.pdf(f));
         }
         ReportJson.writeAtomically(dir.resolve(FILE), render(report, plots, svg));
     }
@@ -61,6 +65,7 @@ public final class SuiteHtml {
     /** @return every figure of the page: the box plots, then per sequence the trajectories and the error */
     static List<Figure> figures(SuiteReport r, List<SequencePlot> plots) {
         List<Figure> out = new ArrayList<>(SuiteFigures.boxes(r));
+        out.addAll(SweepFigures.of(r));
         for (SequencePlot p : plots) {
             out.add(SuiteFigures.overlay(p, PlotPlane.AUTO));
             out.add(SuiteFigures.errorOverTime(p));
@@ -95,6 +100,7 @@ public final class SuiteHtml {
         comparisons(h, r);
         SuiteStatisticsHtml.rankings(h, r);
         SuiteStatisticsHtml.variance(h, r);
+        SimRealHtml.sections(h, r, svg);
         perSequence(h, r);
         boxes(h, r, svg);
         sequences(h, plots, svg);
@@ -328,7 +334,7 @@ public final class SuiteHtml {
         h.append("</tbody></table>\n");
     }
 
-    private static String img(String svg, String alt) {
+    static String img(String svg, String alt) {
         return "<img src=\"data:image/svg+xml;base64," + Base64.getEncoder().encodeToString(svg.getBytes(
                 StandardCharsets.UTF_8)) + "\" alt=\"" + esc(alt) + "\" width=\"" + FigurePainter.WIDTH
                 + "\" height=\"" + FigurePainter.HEIGHT + "\">";

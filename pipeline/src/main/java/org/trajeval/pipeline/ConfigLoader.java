@@ -33,6 +33,9 @@ public final class ConfigLoader {
             .setPropertyNamingStrategy(PropertyNamingStrategies.SNAKE_CASE)
             .enable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES);
 
+    /** Mappings whose keys are not fixed here (checked by the core settings table instead). */
+    private static final java.util.Set<String> FREE_MAPPINGS = java.util.Set.of(PipelineConfig.Bags.METRICS_KEY);
+
     private ConfigLoader() {
     }
 
@@ -71,7 +74,13 @@ public final class ConfigLoader {
             set(tree, o.getKey(), o.getValue(), "--set " + o.getKey());
         }
         try {
-            return YAML.treeToValue(tree, PipelineConfig.class);
+            PipelineConfig config = YAML.treeToValue(tree, PipelineConfig.class);
+            try {
+                config.bagSettings(); // checked now, so a bad bare-bag setting stops the start (exit 2)
+            } catch (InputException e) {
+                throw new InputException(source, 0, e.column(), e.problem(), e.detail(), e.found(), e);
+            }
+            return config;
         } catch (UnrecognizedPropertyException e) {
             throw new InputException(source, 0, e.getPropertyName(), InputProblem.INVALID_CONFIGURATION,
                     "unknown key '" + e.getPropertyName() + "'", e.getPropertyName(), e);
@@ -90,7 +99,13 @@ public final class ConfigLoader {
                         "unknown key '" + prefix + f.getKey() + "' (expected one of " + fieldNames(into) + ")",
                         f.getKey());
             }
-            if (existing.isObject() && f.getValue().isObject()) {
+            if (FREE_MAPPINGS.contains(prefix + f.getKey())) {
+                if (!f.getValue().isObject()) {
+                    throw new InputException(source, 0, prefix + f.getKey(), InputProblem.INVALID_CONFIGURATION,
+                            prefix + f.getKey() + " must be a mapping of settings", f.getValue().toString());
+                }
+                into.set(f.getKey(), f.getValue());
+            } else if (existing.isObject() && f.getValue().isObject()) {
                 merge((ObjectNode) existing, (ObjectNode) f.getValue(), prefix + f.getKey() + ".", source);
             } else {
                 into.set(f.getKey(), f.getValue());
@@ -127,7 +142,8 @@ public final class ConfigLoader {
             node = (ObjectNode) child;
         }
         String leaf = parts[parts.length - 1];
-        if (!node.has(leaf) || node.get(leaf).isObject()) {
+        boolean free = FREE_MAPPINGS.contains(dottedKey.substring(0, Math.max(0, dottedKey.lastIndexOf('.'))));
+        if (!free && (!node.has(leaf) || node.get(leaf).isObject())) {
             throw unknown(dottedKey, origin);
         }
         node.put(leaf, value);

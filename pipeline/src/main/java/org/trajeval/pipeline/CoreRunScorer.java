@@ -12,6 +12,7 @@ import org.trajeval.core.options.FormatApplicability;
 import org.trajeval.core.options.PathResolver;
 import org.trajeval.core.options.SettingsResolver;
 import org.trajeval.core.report.EvaluationReport;
+import org.trajeval.core.report.SavedEvaluation;
 import org.trajeval.pipeline.bundle.RunFields;
 
 /**
@@ -29,13 +30,26 @@ public final class CoreRunScorer implements RunScorer {
 
     @Override
     public EvaluationReport score(RunJob job) {
+        LoadedTrajectory[] pair = read(job);
+        return Evaluator.evaluate(pair[0], pair[1], SettingsResolver.evaluationOptions(job.settings(),
+                DataKind.of(pair[0].trajectory(), pair[1].trajectory())));
+    }
+
+    @Override
+    public SavedEvaluation scoreWithSeries(RunJob job) {
+        LoadedTrajectory[] pair = read(job);
+        return SavedEvaluation.score(pair[0], pair[1], SettingsResolver.evaluationOptions(job.settings(),
+                DataKind.of(pair[0].trajectory(), pair[1].trajectory())),
+                SettingsResolver.subTrajectoryLengthsM(job.settings()));
+    }
+
+    private LoadedTrajectory[] read(RunJob job) {
         LoadedTrajectory ref = named(TrajectoryReader.read(job.reference(),
                 readOptions(job, FileRole.REFERENCE, maxFileBytes)), job);
         LoadedTrajectory est = named(TrajectoryReader.read(job.estimate(),
                 readOptions(job, FileRole.ESTIMATE, maxFileBytes)), job);
         FormatApplicability.check(job.settings(), ref, ref.source(), est, est.source());
-        return Evaluator.evaluate(ref, est, SettingsResolver.evaluationOptions(job.settings(),
-                DataKind.of(ref.trajectory(), est.trajectory())));
+        return new LoadedTrajectory[] {ref, est};
     }
 
     /**

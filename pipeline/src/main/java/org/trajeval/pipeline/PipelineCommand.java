@@ -171,7 +171,7 @@ public final class PipelineCommand implements Runnable {
                         new ReportStore(layout.reports(), ledger, Clock.systemUTC()), metrics.storeLag(), parent.env);
                 RunProcessor processor = new RunProcessor(parent.scorers.apply(c), store.reports());
                 DirectoryService service = new DirectoryService(layout, c.directoryOptions(), processor,
-                        new BundleOpener(c.bundleLimits()), metrics, Clock.systemUTC());
+                        new BundleOpener(c.bundleLimits(), c.bagSettings()), metrics, Clock.systemUTC());
                 HttpEndpoint http = c.http().enabled() && !drain
                         ? HttpEndpoint.start(c.http().host(), c.http().port(), metrics::scrape, service::isRunning) : null;
                 // SIGTERM / SIGINT: stop claiming, finish the runs in hand, print the summary, exit

@@ -24,9 +24,32 @@ import org.trajeval.pipeline.dir.DirectoryOptions;
  * @param http metrics and health endpoint
  * @param kafka Kafka mode settings
  * @param store the results store every committed report is also recorded in
+ * @param bags how bare bags (a bag file dropped alone, or named by a run event) are scored
  */
 public record PipelineConfig(String root, int workers, int queueCapacity, String completion, double quietTimeS,
-        double scanIntervalS, String logFormat, Limits limits, Http http, Kafka kafka, Store store) {
+        double scanIntervalS, String logFormat, Limits limits, Http http, Kafka kafka, Store store, Bags bags) {
+
+    /**
+     * @param metrics the settings of bare bags: any key of the core settings table, as under a
+     *     run.yaml's {@code metrics}; {@code ref_topic} and {@code est_topic} (a topic, or a TF
+     *     trajectory {@code /tf:PARENT.CHILD}) are needed before a bare bag can be scored
+     */
+    public record Bags(java.util.Map<String, Object> metrics) {
+        /** Key path of the free-form settings mapping in the configuration. */
+        public static final String METRICS_KEY = "bags.metrics";
+    }
+
+    /**
+     * @return the checked settings of bare bags ({@code SettingValues.DEFAULTS} when none are given)
+     * @throws org.trajeval.core.InputException naming the key on an unknown setting or a bad value
+     */
+    public org.trajeval.core.options.SettingValues bagSettings() {
+        if (bags == null || bags.metrics() == null || bags.metrics().isEmpty()) {
+            return org.trajeval.core.options.SettingValues.DEFAULTS;
+        }
+        return org.trajeval.core.options.SettingValues.of(org.trajeval.core.options.SettingsTree.flatten(
+                bags.metrics(), Bags.METRICS_KEY, "configuration"), "configuration");
+    }
 
     /**
      * @param db SQLite file or JDBC URL ({@code jdbc:sqlite:}, {@code jdbc:postgresql:}); empty:
@@ -106,7 +129,7 @@ public record PipelineConfig(String root, int workers, int queueCapacity, String
                 new Kafka("127.0.0.1:9092", "trajeval-pipeline", "trajeval.runs", "trajeval.reports",
                         "trajeval.runs.dlq", 3, "", 10_000, 300_000, "", 60, 0, "",
                         new Security("", "", "", "", "", "", "", "")),
-                new Store("", 10));
+                new Store("", 10), new Bags(java.util.Map.of()));
     }
 
     /** @return the root folder */

@@ -17,6 +17,9 @@ import org.trajeval.core.report.EvaluationReport;
  * @param sequence sequence, or null
  * @param method method, or null
  * @param seed seed, or null
+ * @param site site (run.yaml or event {@code site}), or null
+ * @param softwareVersion version of the software under test ({@code software_version}), or null
+ * @param tags free tags ({@code tags}), or null when none
  * @param runVersion 1 for the first content of this run id, n for the n-th distinct content
  * @param contentSha256 SHA-256 over the run's identity, settings and both input files
  * @param referenceSha256 SHA-256 of the reference file's bytes
@@ -26,7 +29,7 @@ import org.trajeval.core.report.EvaluationReport;
  * @param evaluation the evaluation report
  */
 @JsonPropertyOrder({"schema", "schema_version", "tool_version", "run_id", "robot_id", "sequence", "method", "seed",
-    "run_version", "content_sha256", "reference_sha256", "estimate_sha256", "source", "processed_at", "evaluation"})
+    "site", "software_version", "tags", "run_version", "content_sha256", "reference_sha256", "estimate_sha256", "source", "processed_at", "evaluation"})
 @JsonInclude(JsonInclude.Include.NON_NULL)
 public record PipelineReport(
         @JsonProperty("schema") String schema,
@@ -37,6 +40,9 @@ public record PipelineReport(
         @JsonProperty("sequence") String sequence,
         @JsonProperty("method") String method,
         @JsonProperty("seed") Long seed,
+        @JsonProperty("site") String site,
+        @JsonProperty("software_version") String softwareVersion,
+        @JsonProperty("tags") java.util.Map<String, String> tags,
         @JsonProperty("run_version") int runVersion,
         @JsonProperty("content_sha256") String contentSha256,
         @JsonProperty("reference_sha256") String referenceSha256,

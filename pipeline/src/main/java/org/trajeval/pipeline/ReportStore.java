@@ -79,6 +79,16 @@ public final class ReportStore {
         return reportsDir.resolve(version == 1 ? runId + ".json" : runId + ".v" + version + ".json");
     }
 
+    /** @return the folder of a run version's figures ({@code RUN_ID.plots}, {@code RUN_ID.vN.plots}) */
+    public Path plotsFolder(String runId, int version) {
+        return reportsDir.resolve(version == 1 ? runId + ".plots" : runId + ".v" + version + ".plots");
+    }
+
+    /** @return the folder reports are filed in (drafts of figures are drawn there too) */
+    public Path reportsDir() {
+        return reportsDir;
+    }
+
     /** @return the earlier report of this content, if the run was reported with it (no lock; a hint) */
     public boolean probablyReported(String runId, ContentHash hash) {
         return ledger.probablyReported(runId, hash.content());
@@ -95,14 +105,25 @@ public final class ReportStore {
      * @return REPORTED with the new version and file, or DUPLICATE with the earlier ones
      */
     public RunResult commit(RunJob job, ContentHash hash, EvaluationReport evaluation) {
-        RunResult r = commitLocked(job, hash, evaluation);
+        return commit(job, hash, evaluation, null);
+    }
+
+    /**
+     * As {@link #commit(RunJob, ContentHash, EvaluationReport)}, moving the run's drawn figures
+     * into place ({@link #plotsFolder}) before the report is written; when that move fails, the
+     * report says so in a {@code plot_failed} warning and the run is reported all the same.
+     *
+     * @param plotsDraft a draft folder of figures ({@link RunPlots}), or null
+     */
+    public RunResult commit(RunJob job, ContentHash hash, EvaluationReport evaluation, Path plotsDraft) {
+        RunResult r = commitLocked(job, hash, evaluation, plotsDraft);
         if (r.outcome() == Outcome.REPORTED) {
             listener.committed(r.runId(), r.version(), r.report());
         }
         return r;
     }
 
-    private RunResult commitLocked(RunJob job, ContentHash hash, EvaluationReport evaluation) {
+    private RunResult commitLocked(RunJob job, ContentHash hash, EvaluationReport scored, Path plotsDraft) {
         RunMetadata m = job.metadata();
         return ledger.locked(view -> {
             Optional<LedgerEntry> earlier = view.find(m.runId(), hash.content());
@@ -112,9 +133,18 @@ public final class ReportStore {
                         earlier.get().source());
             }
             int version = view.latestVersion(m.runId()) + 1;
+            EvaluationReport evaluation = scored;
+            if (plotsDraft != null) {
+                try {
+                    RunPlots.publish(plotsDraft, plotsFolder(m.runId(), version));
+                } catch (java.io.IOException e) {
+                    evaluation = scored.withWarning(RunProcessor.plotFailed(e));
+                }
+            }
             Instant now = clock.instant();
             PipelineReport report = new PipelineReport(PipelineReport.SCHEMA, PipelineReport.SCHEMA_VERSION,
-                    Version.TOOL, m.runId(), m.robotId(), m.sequence(), m.method(), m.seed(), version,
+                    Version.TOOL, m.runId(), m.robotId(), m.sequence(), m.method(), m.seed(), m.labels().site(),
+                    m.labels().softwareVersion(), m.labels().tags().isEmpty() ? null : m.labels().tags(), version,
                     hash.content(), hash.reference(), hash.estimate(), job.source(), now.toString(), evaluation);
             Path file = reportFile(m.runId(), version);
             writer.accept(file, ReportJson.toJson(report));

@@ -1,6 +1,8 @@
 package org.trajeval.pipeline;
 
+import java.nio.file.Path;
 import org.trajeval.core.report.EvaluationReport;
+import org.trajeval.core.report.SavedEvaluation;
 import org.trajeval.pipeline.bundle.ContentHash;
 
 /**
@@ -49,19 +51,43 @@ public final class RunProcessor {
             }
         }
         EvaluationReport evaluation;
+        SavedEvaluation saved = null;
         try {
-            evaluation = scorer.score(job);
+            if (job.plot()) {
+                saved = scorer.scoreWithSeries(job);
+                evaluation = saved.report();
+            } else {
+                evaluation = scorer.score(job);
+            }
         } catch (RuntimeException e) {
             throw new StageException(RunFailure.of(Stage.SCORE, e), e);
         }
+        Path draft = null;
+        if (saved != null) {
+            try {
+                draft = RunPlots.draft(saved, store.reportsDir(), runId);
+            } catch (RuntimeException | LinkageError | java.awt.AWTError e) {
+                // drawing never costs the run its report (a headless JVM without fonts throws errors)
+                evaluation = evaluation.withWarning(plotFailed(e));
+            }
+        }
         try {
-            return store.commit(job, hash, evaluation);
+            return store.commit(job, hash, evaluation, draft);
         } catch (java.io.UncheckedIOException e) {
             throw EnvironmentException.of(e);
         } catch (EnvironmentException e) {
             throw e;
         } catch (RuntimeException e) {
             throw new StageException(RunFailure.of(Stage.REPORT, e), e);
+        } finally {
+            RunPlots.discard(draft); // moved into place, or not wanted (a duplicate, a failed commit)
         }
+    }
+
+    /** @return the report's warning for figures that could not be drawn or moved into place */
+    static EvaluationReport.Warning plotFailed(Throwable e) {
+        String why = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+        return new EvaluationReport.Warning("plot_failed", "the run's figures (plot: true) could not be written: "
+                + org.trajeval.core.InputText.escape(why) + "; the numbers are unaffected");
     }
 }

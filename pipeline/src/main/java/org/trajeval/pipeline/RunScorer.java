@@ -9,4 +9,14 @@ public interface RunScorer {
      * @throws org.trajeval.core.InputException when a file cannot be read or the pair cannot be scored
      */
     EvaluationReport score(RunJob job);
+
+    /**
+     * Scores keeping the per-pose series, for the run's figures; a scorer that keeps none returns
+     * its report with null series (the run is then reported with a {@code plot_failed} warning).
+     *
+     * @throws org.trajeval.core.InputException as {@link #score}
+     */
+    default org.trajeval.core.report.SavedEvaluation scoreWithSeries(RunJob job) {
+        return new org.trajeval.core.report.SavedEvaluation(score(job), null);
+    }
 }

@@ -2,7 +2,6 @@ package org.trajeval.pipeline;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.nio.file.Path;
 import java.util.List;
@@ -25,7 +24,6 @@ class CoreRunScorerTest {
 
     @Test
     void identicalTrajectoriesScoreZeroAteWithTheRealEngine() {
-        assumeTrue(TestScorers.coreAvailable(), "core engine not merged: real scorer test SKIPPED");
         Fixtures.writeTrajectory(dir.resolve("gt.csv"), 200, 0.0, 1);
         Fixtures.writeTrajectory(dir.resolve("est.csv"), 200, 0.0, 1);
         EvaluationReport r = new CoreRunScorer(1 << 20).score(new RunJob(RunMetadata.ofName("r"), dir.resolve("gt.csv"),

@@ -13,7 +13,7 @@ import org.trajeval.core.stats.ErrorStatistics;
 import org.trajeval.pipeline.bundle.ContentHash;
 
 /**
- * Stands in for the core engine while it is not merged: reads {@code t,x,y,yaw} CSV (refusing a
+ * A fast stand-in for the core engine in tests of the pipeline's own logic: reads {@code t,x,y,yaw} CSV (refusing a
  * non-number with the line, like the real reader), pairs poses by index and reports the RMSE of
  * the position differences. Only the pipeline's logic is under test with it, never a metric.
  */

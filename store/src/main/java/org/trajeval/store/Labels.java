@@ -14,7 +14,11 @@ import java.util.TreeMap;
  * @param tags free tag to value
  */
 public record Labels(Map<String, String> columns, Map<String, String> tags) {
-    private static final List<String> LABEL_COLUMNS = List.of("software_version", "robot", "site", "route");
+    /** The label columns of a recording whose reports name method and seed themselves (suite, pipeline). */
+    public static final List<String> LABEL_COLUMNS = List.of("software_version", "robot", "site", "route");
+    /** The label columns of one evaluation ({@code eval --db}), which has no method or seed of its own. */
+    public static final List<String> EVAL_COLUMNS = List.of("software_version", "robot", "site", "route", "method",
+            "seed");
 
     /** Compact constructor: copies, sorted. */
     public Labels {
@@ -32,16 +36,29 @@ public record Labels(Map<String, String> columns, Map<String, String> tags) {
      * @throws StoreException BAD_QUERY on a malformed pair
      */
     public static Labels parse(List<String> pairs) {
+        return parse(pairs, LABEL_COLUMNS);
+    }
+
+    /**
+     * @param pairs {@code KEY=VALUE} texts
+     * @param columns the label columns a tag may fill ({@link #LABEL_COLUMNS} or {@link #EVAL_COLUMNS})
+     * @throws StoreException BAD_QUERY on a malformed pair, a column the report fills itself, or a
+     *     seed that is no whole number
+     */
+    public static Labels parse(List<String> pairs, List<String> columns) {
         Map<String, String> cols = new LinkedHashMap<>();
         Map<String, String> tags = new LinkedHashMap<>();
         for (String p : pairs) {
             Selection one = Selection.parse(p, "--tag");
             one.conditions().forEach((k, v) -> {
-                if (LABEL_COLUMNS.contains(k)) {
+                if (columns.contains(k)) {
+                    if ("seed".equals(k)) {
+                        Selection.parseSeed(v);
+                    }
                     cols.put(k, v);
                 } else if (Selection.COLUMNS.contains(k)) {
                     throw new StoreException(StoreException.Problem.BAD_QUERY, "--tag: '" + k + "' comes from the "
-                            + "report itself; a tag may set " + String.join(", ", LABEL_COLUMNS) + " or a free key", null);
+                            + "report itself; a tag may set " + String.join(", ", columns) + " or a free key", null);
                 } else {
                     tags.put(k, v);
                 }
@@ -55,8 +72,12 @@ public record Labels(Map<String, String> columns, Map<String, String> tags) {
         return fallback != null ? fallback : columns.get(name);
     }
 
-    /** @return a canonical text of every label, for result keys */
+    /**
+     * @return a canonical text of every label, for result keys: keys sorted, e.g.
+     *     {@code {site=hamburg, software_version=2.4}|{shift=night}} (sorted explicitly: the iteration
+     *     order of {@code Map.copyOf} changes from one JVM to the next, and a key must not)
+     */
     String canonical() {
-        return columns + "|" + tags;
+        return new TreeMap<>(columns) + "|" + new TreeMap<>(tags);
     }
 }

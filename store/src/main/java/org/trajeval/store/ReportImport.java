@@ -12,7 +12,7 @@ import java.util.stream.Stream;
 
 /**
  * {@code trajeval db import DIR}: records every trajeval report under a folder (or one file):
- * pipeline reports and suite {@code report.json} files; other JSON files are counted and left
+ * pipeline reports, suite {@code report.json} files and eval reports ({@code eval --out}); other JSON files are counted and left
  * alone, hidden and temporary names ({@code .x}, {@code *.tmp}) skipped. Results already stored
  * are no-ops, so an import can be repeated, run beside a live pipeline, or rebuild a lost store.
  */
@@ -66,6 +66,7 @@ public final class ReportImport {
             }
             switch (ReportRecords.kind(json, f.toString())) {
                 case PIPELINE -> batch.add(ReportRecords.fromPipeline(json, f.toString(), labels));
+                case EVALUATION -> batch.add(ReportRecords.fromEvaluation(json, f.toString(), mtime, labels));
                 case SUITE -> batch.addAll(ReportRecords.fromSuite(ReportRecords.parseSuite(json, f.toString()),
                         f.toString(), mtime, labels));
                 default -> skipped++;

@@ -23,7 +23,8 @@ import org.trajeval.core.report.SuiteReportFiles;
 
 /**
  * Turns report files (the source of truth) into store rows: a suite {@code report.json} gives one
- * row per (method, sequence, seed) run, a pipeline report {@code reports/RUN_ID.json} one row.
+ * row per (method, sequence, seed) run, a pipeline report {@code reports/RUN_ID.json} one row, an
+ * eval report ({@code eval --out}) one row.
  *
  * <p>Row keys: a pipeline row's key is SHA-256("pipeline", content_sha256, labels); a suite row's
  * is SHA-256("suite", dataset, method, sequence, seed, the estimate's and the reference's
@@ -44,6 +45,8 @@ public final class ReportRecords {
         SUITE,
         /** A pipeline run report. */
         PIPELINE,
+        /** A {@code trajeval eval} report. */
+        EVALUATION,
         /** Some other JSON (left alone by imports). */
         OTHER
     }
@@ -59,6 +62,9 @@ public final class ReportRecords {
         String s = schema == null ? "" : schema.asText();
         if (SuiteReport.SCHEMA.equals(s)) {
             return Kind.SUITE;
+        }
+        if (EvaluationReport.SCHEMA.equals(s)) {
+            return Kind.EVALUATION;
         }
         return PIPELINE_SCHEMA.equals(s) ? Kind.PIPELINE : Kind.OTHER;
     }
@@ -91,13 +97,7 @@ public final class ReportRecords {
         } catch (IllegalArgumentException e) {
             throw bad(source, e.getMessage(), e);
         }
-        Map<String, Double> metrics = new HashMap<>();
-        for (RunMetric m : RunMetric.values()) {
-            double v = m.of(evaluation);
-            if (Double.isFinite(v)) {
-                metrics.put(m.key(), v);
-            }
-        }
+        Map<String, Double> metrics = metrics(evaluation);
         Map<String, String> tags = new LinkedHashMap<>(labels.tags());
         JsonNode t = n.get("tags");
         if (t != null && t.isObject()) {
@@ -111,9 +111,57 @@ public final class ReportRecords {
         JsonNode version = n.get("run_version");
         return new RunRecord(key, "pipeline", text(n, "run_id"), version == null ? null : version.asInt(), content,
                 null, labels.column("robot", text(n, "robot_id")), labels.column("site", text(n, "site")),
-                labels.column("route", text(n, "sequence")), text(n, "method"),
+                labels.column("route", text(n, "sequence")), labels.column("method", text(n, "method")),
                 labels.column("software_version", text(n, "software_version")),
-                seed == null || seed.isNull() ? null : seed.asLong(), at, true, null, metrics, source, tags);
+                seed == null || seed.isNull() ? labelSeed(labels) : Long.valueOf(seed.asLong()), at, true, null,
+                metrics, source, tags);
+    }
+
+    /** @return the seed label, or null ({@link Labels#parse} checked it is a whole number) */
+    private static Long labelSeed(Labels labels) {
+        String seed = labels.columns().get("seed");
+        return seed == null ? null : Long.valueOf(Long.parseLong(seed));
+    }
+
+    /** @return the run metrics of an evaluation that are finite, by column */
+    private static Map<String, Double> metrics(EvaluationReport evaluation) {
+        Map<String, Double> metrics = new HashMap<>();
+        for (RunMetric m : RunMetric.values()) {
+            double v = m.of(evaluation);
+            if (Double.isFinite(v)) {
+                metrics.put(m.key(), v);
+            }
+        }
+        return metrics;
+    }
+
+    /**
+     * One row for one {@code trajeval eval} report (schema {@code trajeval.evaluation}), the same
+     * whether {@code eval --db} records it or {@code db import} reads its {@code --out} file.
+     * Key: SHA-256("eval", the report re-serialised canonically, labels); the report names both
+     * inputs with their SHA-256 and every setting, so the same evaluation recorded again is a no-op.
+     * Robot, site, route, method, seed and software version come from the labels.
+     *
+     * @param json the report's text
+     * @param source the report file, or a description of the inputs, for the row's source
+     * @param recordedAt when it was evaluated (an imported file: its modification time)
+     * @throws StoreException BAD_REPORT when it is no evaluation report
+     */
+    public static RunRecord fromEvaluation(String json, String source, Instant recordedAt, Labels labels) {
+        EvaluationReport evaluation;
+        try {
+            evaluation = ReportJson.parseEvaluation(json);
+        } catch (IllegalArgumentException e) {
+            throw bad(source, e.getMessage(), e);
+        }
+        if (!EvaluationReport.SCHEMA.equals(evaluation.schema())) {
+            throw bad(source, "not an evaluation report (schema " + EvaluationReport.SCHEMA + " expected)", null);
+        }
+        String key = sha256("eval", ReportJson.toJson(evaluation), labels.canonical());
+        return new RunRecord(key, "eval", null, null, null, null, labels.columns().get("robot"),
+                labels.columns().get("site"), labels.columns().get("route"), labels.columns().get("method"),
+                labels.columns().get("software_version"), labelSeed(labels), recordedAt, true, null,
+                metrics(evaluation), source, labels.tags());
     }
 
     /** @return the row key of a pipeline report with this content hash and these labels */

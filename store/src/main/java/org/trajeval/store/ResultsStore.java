@@ -355,7 +355,26 @@ public final class ResultsStore implements AutoCloseable {
         }
     }
 
-    private static void bindAll(PreparedStatement s, List<Object> args) throws SQLException {
+    /** Work on the store's connection, for read queries kept beside the concept they serve. */
+    @FunctionalInterface
+    interface SqlWork<T> {
+        T run(Connection c) throws SQLException;
+    }
+
+    /**
+     * Runs read queries on the store's one connection (synchronized like every method).
+     *
+     * @param what what is read, for the message of a failure
+     */
+    synchronized <T> T read(String what, SqlWork<T> work) {
+        try {
+            return work.run(connection);
+        } catch (SQLException e) {
+            throw failure("cannot " + what, e);
+        }
+    }
+
+    static void bindAll(PreparedStatement s, List<Object> args) throws SQLException {
         for (int i = 0; i < args.size(); i++) {
             Object a = args.get(i);
             if (a instanceof Long l) {

@@ -78,7 +78,7 @@ public record Selection(Map<String, String> conditions) {
         }
     }
 
-    private static long parseSeed(String v) {
+    static long parseSeed(String v) {
         try {
             return Long.parseLong(v);
         } catch (NumberFormatException e) {

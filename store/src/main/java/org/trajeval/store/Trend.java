@@ -7,6 +7,7 @@ import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.trajeval.core.stats.Holm;
 import org.trajeval.core.stats.Interval;
 import org.trajeval.core.stats.WelchTest;
 
@@ -17,7 +18,7 @@ import org.trajeval.core.stats.WelchTest;
  * <p>Rule: per slice, the latest bucket (by first recording time) against all earlier buckets
  * pooled; Welch's one-sided t-test in the worse direction (higher for error metrics, lower for the
  * score and the coverage); the p-values of the slices that have at least 2 values on both sides
- * are Holm-adjusted together (family-wise error rate alpha = 1 - confidence across slices), and a
+ * are Holm-adjusted together ({@link Holm}) (family-wise error rate alpha = 1 - confidence across slices), and a
  * slice is flagged when its adjusted p is below alpha. Pooled variances come from the cells' sums
  * of squares (fine for metric values of similar magnitude, which these are).
  */
@@ -121,7 +122,7 @@ public final class Trend {
                                 hist.variance());
             }
         }
-        double[] adj = holm(p);
+        double[] adj = holmOverTested(p);
         double alpha = 1 - confidence;
         List<Slice> slices = new ArrayList<>();
         for (int i = 0; i < names.size(); i++) {
@@ -131,27 +132,22 @@ public final class Trend {
     }
 
     /**
-     * Holm's step-down adjustment over the finite p-values (NaN stays NaN): sorted p_(1..m),
-     * adj_(i) = max_{j &lt;= i} min(1, (m - j + 1) p_(j)). (Holm 1979; the statistics branch adds the
-     * same adjustment to core.stats, which this should call once merged.)
+     * Holm's adjustment ({@link Holm#adjust}) over the slices that were tested: the finite p-values
+     * form the family, an untested slice (NaN) stays NaN and does not count in m.
      */
-    static double[] holm(double[] p) {
-        List<Integer> idx = new ArrayList<>();
-        for (int i = 0; i < p.length; i++) {
-            if (!Double.isNaN(p[i])) {
-                idx.add(i);
-            }
+    static double[] holmOverTested(double[] p) {
+        int[] tested = java.util.stream.IntStream.range(0, p.length).filter(i -> !Double.isNaN(p[i])).toArray();
+        double[] family = new double[tested.length];
+        for (int j = 0; j < tested.length; j++) {
+            family[j] = p[tested[j]];
         }
-        idx.sort(Comparator.comparingDouble(i -> p[i]));
-        double[] adj = new double[p.length];
-        java.util.Arrays.fill(adj, Double.NaN);
-        double running = 0;
-        int m = idx.size();
-        for (int j = 0; j < m; j++) {
-            running = Math.max(running, Math.min(1.0, (m - j) * p[idx.get(j)]));
-            adj[idx.get(j)] = running;
+        double[] adjusted = Holm.adjust(family);
+        double[] out = new double[p.length];
+        java.util.Arrays.fill(out, Double.NaN);
+        for (int j = 0; j < tested.length; j++) {
+            out[tested[j]] = adjusted[j];
         }
-        return adj;
+        return out;
     }
 
     private static String label(String bucket, TrendBucket kind) {

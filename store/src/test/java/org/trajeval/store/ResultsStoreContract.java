@@ -15,6 +15,8 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import org.junit.jupiter.api.Test;
+import org.trajeval.core.protocol.RegressionGate;
+import org.trajeval.core.report.SuiteReport.RunEntry;
 
 /** What every store dialect must do; run against SQLite and a real PostgreSQL. */
 abstract class ResultsStoreContract {
@@ -125,5 +127,85 @@ abstract class ResultsStoreContract {
         try (ResultsStore s = ResultsStore.open(location, CLOCK)) {
             assertEquals(1, s.count());
         }
+    }
+
+    @Test
+    void theGatePairedInSqlMatchesTheGateOnTheSameRunsInJava() throws Exception {
+        // the reference is RegressionGate.gateAll over the runs as suite run entries (the file gate's
+        // pairing in Java); the data has what pairing must handle: seeds only one side has, repeated
+        // (method, route, seed) runs, failed runs, runs without route or seed (and a route named "-",
+        // which pairs with them, as in Java), a method only one side has
+        Random rnd = new Random(14);
+        List<RunRecord> runs = new ArrayList<>();
+        int id = 0;
+        for (String version : List.of("2.3", "2.4")) {
+            for (String method : List.of("orb", "vins", "only-" + version)) {
+                for (int route = 0; route < 6; route++) {
+                    for (long seed = 1; seed <= 4; seed++) {
+                        if (rnd.nextInt(5) == 0) {
+                            continue; // this seed is missing on this side
+                        }
+                        int copies = rnd.nextInt(4) == 0 ? 2 : 1;
+                        for (int k = 0; k < copies; k++) {
+                            boolean ok = rnd.nextInt(10) != 0;
+                            double ate = 0.1 + 0.02 * route + (version.equals("2.4") && method.equals("vins") ? 0.05
+                                    : 0.0) + 0.01 * rnd.nextGaussian();
+                            Map<String, Double> m = ok ? Map.of("ate_trans_rmse_m", ate, "rpe_trans_rmse_m", ate / 3,
+                                    "score", 100 - 100 * ate) : Map.of("score", 0.0);
+                            runs.add(new RunRecord(ReportRecords.sha256("gate", Integer.toString(id)), "suite",
+                                    "r" + id, null, null, null, "bot-" + (id++ % 2), null, route == 5 ? null
+                                    : route == 3 ? "-" : "route-" + route, method, version, route == 4 && seed == 1 ? null : seed,
+                                    Instant.ofEpochMilli(id), ok, ok ? null : "diverged", m, "test", Map.of()));
+                        }
+                    }
+                }
+            }
+        }
+        Map<String, Double> tolerances = new java.util.LinkedHashMap<>();
+        tolerances.put("ate_trans_rmse_m", 0.05);
+        tolerances.put("rpe_trans_rmse_m", 0.10);
+        tolerances.put("score", 0.05);
+        RegressionGate.Settings settings = new RegressionGate.Settings(0.95, 3, 500);
+        try (ResultsStore s = ResultsStore.open(freshLocation(), CLOCK)) {
+            s.record(runs);
+            for (GatePairing pairing : GatePairing.values()) {
+                Selection b = Selection.parse("version=2.3", "--baseline");
+                Selection c = Selection.parse("version=2.4", "--candidate");
+                StoredGate.Result sql = StoredGate.gate(s, b, c, pairing, tolerances, settings);
+                assertEquals(List.of("orb", "vins"), sql.methods());
+                List<RunEntry> be = entries(s.select(b), pairing);
+                List<RunEntry> ce = entries(s.select(c), pairing);
+                List<String> seqs = be.stream().map(RunEntry::sequence).distinct().sorted().toList();
+                assertEquals(seqs.size(), sql.baselineSequences());
+                List<RegressionGate.Finding> java = RegressionGate.gateAll(be, ce, sql.methods(), seqs, tolerances,
+                        settings);
+                assertEquals(java.size(), sql.findings().size());
+                for (int i = 0; i < java.size(); i++) {
+                    RegressionGate.Finding j = java.get(i);
+                    RegressionGate.Finding q = sql.findings().get(i);
+                    String what = pairing + " " + j.method() + " " + j.metric();
+                    assertEquals(j.n(), q.n(), what);
+                    assertEquals(j.baselineMean(), q.baselineMean(), VALUE_TOL, what);
+                    assertEquals(j.candidateMean(), q.candidateMean(), VALUE_TOL, what);
+                    assertEquals(j.bound(), q.bound(), VALUE_TOL, what);
+                    assertEquals(j.verdict(), q.verdict(), what);
+                }
+                assertEquals(RegressionGate.Verdict.REGRESSION, sql.findings().get(3).verdict(),
+                        "vins is 0.05 m worse on 2.4, beyond 5 % of about 0.15 m");
+            }
+        }
+    }
+
+    /** Stored runs as suite run entries, the pairing's sequence and seed as theirs (the reference path). */
+    private static List<RunEntry> entries(List<RunRecord> records, GatePairing pairing) {
+        List<RunEntry> out = new ArrayList<>();
+        for (RunRecord r : records) {
+            String route = r.route() == null ? "-" : r.route();
+            String sequence = pairing == GatePairing.ROBOT_ROUTE ? r.robot() + "/" + route : route;
+            long seed = pairing == GatePairing.ROBOT_ROUTE || r.seed() == null ? 0 : r.seed();
+            out.add(new RunEntry(r.method(), sequence, seed, "test", null, r.ok() ? "ok" : "failed", null, null,
+                    r.metrics(), r.metric(StoredMetric.SCORE), null));
+        }
+        return out;
     }
 }

@@ -61,6 +61,41 @@ class SqliteStoreTest extends ResultsStoreContract {
         }
         StoreException e = assertThrows(StoreException.class, () -> ResultsStore.open(loc, CLOCK));
         assertEquals(StoreException.Problem.SCHEMA, e.problem());
-        assertTrue(e.getMessage().contains("version 99, newer than this trajeval knows (1)"), e.getMessage());
+        assertTrue(e.getMessage().contains("version 99, newer than this trajeval knows (2)"), e.getMessage());
+    }
+
+    @Test
+    void aVersionOneStoreIsUpgradedToVersionTwoKeepingItsRows() throws Exception {
+        StoreLocation loc = freshLocation();
+        try (ResultsStore s = ResultsStore.open(loc, CLOCK)) {
+            s.record(java.util.List.of(Records.run(1, "bot-1", "hall", "2.3", 1, 0.1, 0, java.util.Map.of())));
+        }
+        // make it the store an earlier trajeval left: V2 neither applied nor recorded
+        try (Connection c = DriverManager.getConnection(loc.jdbcUrl()); Statement s = c.createStatement()) {
+            s.executeUpdate("DROP INDEX runs_by_site");
+            s.executeUpdate("DROP INDEX runs_by_version_gate");
+            s.executeUpdate("CREATE INDEX runs_by_version ON runs (software_version, method, route, seed)");
+            s.executeUpdate("DELETE FROM trajeval_schema_migrations WHERE version = 2");
+        }
+        try (ResultsStore s = ResultsStore.open(loc, CLOCK)) {
+            assertEquals(1, s.count());
+        }
+        try (Connection c = DriverManager.getConnection(loc.jdbcUrl()); Statement s = c.createStatement()) {
+            try (ResultSet rs = s.executeQuery("SELECT name FROM trajeval_schema_migrations ORDER BY version")) {
+                assertTrue(rs.next());
+                assertEquals("V1__runs.sql", rs.getString(1));
+                assertTrue(rs.next());
+                assertEquals("V2__site_version_tags.sql", rs.getString(1));
+            }
+            try (ResultSet rs = s.executeQuery("SELECT name FROM sqlite_master WHERE type = 'index' "
+                    + "AND name LIKE 'runs_by_%' ORDER BY name")) {
+                java.util.List<String> names = new java.util.ArrayList<>();
+                while (rs.next()) {
+                    names.add(rs.getString(1));
+                }
+                assertEquals(java.util.List.of("runs_by_robot", "runs_by_route", "runs_by_site", "runs_by_time",
+                        "runs_by_version_gate"), names, "V2's indexes, V1's runs_by_version replaced");
+            }
+        }
     }
 }

@@ -3,6 +3,7 @@ package org.trajeval.core.align;
 import org.trajeval.core.InputException;
 import org.trajeval.core.InputProblem;
 import org.trajeval.core.traj.PoseSequence;
+import org.trajeval.core.traj.PositionColumns;
 
 /** Fits an {@link AlignmentModel} that brings the estimate onto the reference. */
 public final class Alignment {
@@ -20,21 +21,31 @@ public final class Alignment {
      */
     public static AlignmentTransform fit(AlignmentModel model, PoseSequence reference, PoseSequence estimate,
             int nToAlign, String source) {
-        int n = nToAlign < 0 ? estimate.size() : Math.min(nToAlign, estimate.size());
+        return fit(model, PosePairs.of(reference, estimate), nToAlign, source);
+    }
+
+    /**
+     * As {@link #fit(AlignmentModel, PoseSequence, PoseSequence, int, String)} on pairs read in
+     * place (the same sums in the same order: the same bits).
+     */
+    public static AlignmentTransform fit(AlignmentModel model, PosePairs pairs, int nToAlign, String source) {
+        int n = nToAlign < 0 ? pairs.size() : Math.min(nToAlign, pairs.size());
         return switch (model) {
             case NONE -> AlignmentTransform.identity(0);
-            case ORIGIN -> origin(reference, estimate);
-            case SE2, SIM2, POSYAW -> planar(model, reference, estimate, n, source);
-            case SE3, SIM3 -> spatial(model, reference, estimate, n, source);
+            case ORIGIN -> origin(pairs);
+            case SE2, SIM2, POSYAW -> planar(model, pairs.reference(), pairs.estimate(), n, source);
+            case SE3, SIM3 -> spatial(model, pairs.reference(), pairs.estimate(), n, source);
         };
     }
 
     /** T = T_ref,0 T_est,0^-1: R = R_ref0 R_est0^T, t = t_ref0 - R t_est0. */
-    private static AlignmentTransform origin(PoseSequence ref, PoseSequence est) {
+    private static AlignmentTransform origin(PosePairs pairs) {
+        PositionColumns ref = pairs.reference();
+        PositionColumns est = pairs.estimate();
         double[] rr = new double[9];
         double[] re = new double[9];
-        ref.rotation(0, rr, 0);
-        est.rotation(0, re, 0);
+        pairs.referenceRotation(0, rr, 0);
+        pairs.estimateRotation(0, re, 0);
         double[] r = new double[9];
         for (int i = 0; i < 3; i++) {
             for (int j = 0; j < 3; j++) {
@@ -62,7 +73,7 @@ public final class Alignment {
      * rotation, never a reflection); sim2: s = sqrt(a^2 + b^2) / sum |e|^2; the translation is
      * mu_g - s R mu_e in xy, and for posyaw also in z (se2/sim2 leave z alone).
      */
-    private static AlignmentTransform planar(AlignmentModel model, PoseSequence ref, PoseSequence est, int n,
+    private static AlignmentTransform planar(AlignmentModel model, PositionColumns ref, PositionColumns est, int n,
             String source) {
         if (n < 2) {
             throw new InputException(source, 0, null, InputProblem.TOO_FEW_POSES,
@@ -131,23 +142,13 @@ public final class Alignment {
         return new AlignmentTransform(model, r, new double[] {tx, ty, tz}, scale, n);
     }
 
-    private static AlignmentTransform spatial(AlignmentModel model, PoseSequence ref, PoseSequence est, int n,
+    private static AlignmentTransform spatial(AlignmentModel model, PositionColumns ref, PositionColumns est, int n,
             String source) {
         if (n < 3) {
             throw new InputException(source, 0, null, InputProblem.TOO_FEW_POSES,
                     model.name().toLowerCase() + " alignment needs at least 3 associated poses, got " + n, null);
         }
-        double[][] x = new double[3][n];
-        double[][] y = new double[3][n];
-        for (int i = 0; i < n; i++) {
-            x[0][i] = est.x(i);
-            x[1][i] = est.y(i);
-            x[2][i] = est.z(i);
-            y[0][i] = ref.x(i);
-            y[1][i] = ref.y(i);
-            y[2][i] = ref.z(i);
-        }
-        double[][] fit = Umeyama.fit(x, y, n, model == AlignmentModel.SIM3);
+        double[][] fit = Umeyama.fit(est, ref, n, model == AlignmentModel.SIM3);
         if (fit == null || !(fit[2][0] > 0.0)) {
             throw new InputException(source, 0, null, InputProblem.DEGENERATE_ALIGNMENT,
                     model.name().toLowerCase() + " alignment is not determined: the covariance of the " + n

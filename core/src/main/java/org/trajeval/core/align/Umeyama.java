@@ -5,6 +5,7 @@ import org.ejml.dense.row.CommonOps_DDRM;
 import org.ejml.dense.row.SingularOps_DDRM;
 import org.ejml.dense.row.factory.DecompositionFactory_DDRM;
 import org.ejml.interfaces.decomposition.SingularValueDecomposition_F64;
+import org.trajeval.core.traj.PositionColumns;
 
 /**
  * Umeyama's least-squares similarity between two 3D point sets (IEEE PAMI 1991), with EJML's
@@ -18,19 +19,19 @@ final class Umeyama {
     }
 
     /**
-     * @param x source points (estimate), 3 x n as x[0..2][i]
+     * @param x source points (estimate), the first n read
      * @param y target points (reference)
      * @return {R (9, row-major), t (3), {c}} or {@code null} when the covariance has rank < 2
      */
-    static double[][] fit(double[][] x, double[][] y, int n, boolean withScale) {
+    static double[][] fit(PositionColumns x, PositionColumns y, int n, boolean withScale) {
         double[] mx = new double[3];
         double[] my = new double[3];
         for (int d = 0; d < 3; d++) {
             double sx = 0;
             double sy = 0;
             for (int i = 0; i < n; i++) {
-                sx += x[d][i];
-                sy += y[d][i];
+                sx += coordinate(x, d, i);
+                sy += coordinate(y, d, i);
             }
             mx[d] = sx / n;
             my[d] = sy / n;
@@ -38,11 +39,11 @@ final class Umeyama {
         double sigmaX = 0;
         double[] cov = new double[9];
         for (int i = 0; i < n; i++) {
-            double ex0 = x[0][i] - mx[0];
-            double ex1 = x[1][i] - mx[1];
-            double ex2 = x[2][i] - mx[2];
+            double ex0 = x.x(i) - mx[0];
+            double ex1 = x.y(i) - mx[1];
+            double ex2 = x.z(i) - mx[2];
             sigmaX += ex0 * ex0 + ex1 * ex1 + ex2 * ex2;
-            double[] ey = {y[0][i] - my[0], y[1][i] - my[1], y[2][i] - my[2]};
+            double[] ey = {y.x(i) - my[0], y.y(i) - my[1], y.z(i) - my[2]};
             for (int r = 0; r < 3; r++) {
                 cov[3 * r] += ey[r] * ex0;
                 cov[3 * r + 1] += ey[r] * ex1;
@@ -99,5 +100,9 @@ final class Umeyama {
             t[r] = my[r] - scale * (rot[3 * r] * mx[0] + rot[3 * r + 1] * mx[1] + rot[3 * r + 2] * mx[2]);
         }
         return new double[][] {rot, t, {scale}};
+    }
+
+    private static double coordinate(PositionColumns p, int d, int i) {
+        return d == 0 ? p.x(i) : d == 1 ? p.y(i) : p.z(i);
     }
 }

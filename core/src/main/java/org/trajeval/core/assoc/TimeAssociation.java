@@ -91,9 +91,9 @@ public final class TimeAssociation {
         double[] stamps = java.util.Arrays.copyOf(tq, count);
         PoseSequence refPoses;
         if (ref instanceof PlanarTrajectory planar && est instanceof PlanarTrajectory) {
-            refPoses = PlanarInterpolation.at(planar, stamps);
+            refPoses = InterpolatedReference.planarAt(planar, stamps);
         } else {
-            refPoses = SpatialInterpolation.at(ref.toSpatial(), stamps);
+            refPoses = InterpolatedReference.spatialAt(ref.toSpatial(), stamps);
         }
         PoseSequence estPoses = est.toSpatial().poses().select(keep, count);
         int[] span = span(ref, stamps[0], stamps[count - 1]);
@@ -104,8 +104,16 @@ public final class TimeAssociation {
 
     // ---------------------------------------------------------------- evo's nearest matching
 
-    private static AssociatedPoses nearest(Trajectory ref, Trajectory est, AssociationOptions o,
-            String refName, String estName) {
+    /**
+     * Pairs by evo's nearest matching (see the class comment), as indices.
+     *
+     * @param referenceName file name used in error messages
+     * @param estimateName file name used in error messages
+     * @return the matched index pairs, in increasing order of both indices
+     * @throws InputException NO_OVERLAP when nothing can be paired
+     */
+    public static NearestPairs nearestPairs(Trajectory ref, Trajectory est, AssociationOptions o,
+            String referenceName, String estimateName) {
         boolean estLonger = est.size() > ref.size();
         Trajectory shortTraj = estLonger ? ref : est;
         Trajectory longTraj = estLonger ? est : ref;
@@ -147,10 +155,36 @@ public final class TimeAssociation {
             idxLong[count++] = best;
         }
         if (count == 0) {
-            throw noOverlap(ref, est, o, refName, estName);
+            throw noOverlap(ref, est, o, referenceName, estimateName);
         }
-        int[] idxRef = estLonger ? idxShort : idxLong;
-        int[] idxEst = estLonger ? idxLong : idxShort;
+        return new NearestPairs(estLonger ? idxShort : idxLong, estLonger ? idxLong : idxShort, count);
+    }
+
+    /**
+     * Index pairs of nearest matching: pair k is reference pose {@code reference[k]} and estimate
+     * pose {@code estimate[k]}, for k &lt; count (the arrays may be longer).
+     */
+    public record NearestPairs(int[] reference, int[] estimate, int count) {
+        /** @return the number of distinct reference poses used */
+        public int distinctReference() {
+            return countDistinct(reference, count);
+        }
+
+        /** @return the number of distinct estimate poses used */
+        public int distinctEstimate() {
+            return countDistinct(estimate, count);
+        }
+    }
+
+    private static AssociatedPoses nearest(Trajectory ref, Trajectory est, AssociationOptions o,
+            String refName, String estName) {
+        NearestPairs np = nearestPairs(ref, est, o, refName, estName);
+        boolean estLonger = est.size() > ref.size();
+        Trajectory shortTraj = estLonger ? ref : est;
+        int count = np.count();
+        int[] idxShort = estLonger ? np.reference() : np.estimate();
+        int[] idxRef = np.reference();
+        int[] idxEst = np.estimate();
         SpatialTrajectory refS = ref.toSpatial();
         SpatialTrajectory estS = est.toSpatial();
         PoseSequence refPoses;
@@ -164,7 +198,7 @@ public final class TimeAssociation {
                 tq[k] = shortTraj.t(idxShort[k]) + (estLonger ? -o.tOffsetS() : o.tOffsetS());
             }
             PoseSequence shortPoses = (estLonger ? refS : estS).poses().select(idxShort, count);
-            PoseSequence longPoses = SpatialInterpolation.evoInterpolate(estLonger ? estS : refS, tq);
+            PoseSequence longPoses = InterpolatedReference.spatialAt(estLonger ? estS : refS, tq);
             refPoses = estLonger ? shortPoses : longPoses;
             estPoses = estLonger ? longPoses : shortPoses;
             for (int k = 0; k < count; k++) {
@@ -177,8 +211,8 @@ public final class TimeAssociation {
                 stamps[k] = est.t(idxEst[k]) + o.tOffsetS();
             }
         }
-        int distinctEst = countDistinct(idxEst, count);
-        int distinctRef = countDistinct(idxRef, count);
+        int distinctEst = np.distinctEstimate();
+        int distinctRef = np.distinctReference();
         int first = idxRef[0];
         int last = idxRef[count - 1];
         return new AssociatedPoses(refPoses, estPoses, stamps, est.size() - distinctEst, ref.size() - distinctRef,

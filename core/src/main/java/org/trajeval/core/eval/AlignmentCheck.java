@@ -6,7 +6,7 @@ import java.util.Locale;
 import org.trajeval.core.align.AlignmentModel;
 import org.trajeval.core.align.AlignmentTransform;
 import org.trajeval.core.report.EvaluationReport.Warning;
-import org.trajeval.core.traj.PoseSequence;
+import org.trajeval.core.traj.PositionColumns;
 
 /**
  * Names a fitted alignment that cannot be trusted, each with the option that avoids it:
@@ -41,14 +41,16 @@ final class AlignmentCheck {
      * @param tf the fitted transform
      * @param ref associated reference poses (the first {@code tf.posesUsed()} were fitted on)
      * @param est associated estimate poses, before alignment
+     * @param size number of associated poses
      * @param planarData whether both trajectories are planar SE(2) data (or projected to it)
      * @return the warnings, possibly none
      */
-    static List<Warning> check(AlignmentTransform tf, PoseSequence ref, PoseSequence est, boolean planarData) {
+    static List<Warning> check(AlignmentTransform tf, PositionColumns ref, PositionColumns est, int size,
+            boolean planarData) {
         List<Warning> out = new ArrayList<>();
         AlignmentModel m = tf.model();
         boolean spatialModel = m == AlignmentModel.SE3 || m == AlignmentModel.SIM3;
-        int n = Math.min(tf.posesUsed(), ref.size());
+        int n = Math.min(tf.posesUsed(), size);
         if (spatialModel && tf.rotation()[8] < 0.0 && (planarData || (flat(ref, n) && flat(est, n)))) {
             out.add(new Warning(FLIPS_PLANE, String.format(Locale.ROOT, "the %s alignment turns the plane of this "
                     + "planar data upside down (R_zz = %.3f: a 180 deg rotation about an in-plane axis), so the "
@@ -88,7 +90,7 @@ final class AlignmentCheck {
     }
 
     /** @return whether z varies by at most PLANAR_RATIO of the xy extent over the first n poses */
-    private static boolean flat(PoseSequence p, int n) {
+    private static boolean flat(PositionColumns p, int n) {
         double zMin = Double.POSITIVE_INFINITY;
         double zMax = Double.NEGATIVE_INFINITY;
         double xMin = Double.POSITIVE_INFINITY;
@@ -112,7 +114,7 @@ final class AlignmentCheck {
      *     square roots of the eigenvalues of their covariance (closed form for a symmetric 3x3 matrix,
      *     O. K. Smith, Comm. ACM 4(4), 1961)
      */
-    static double[] principalSpreads(PoseSequence p, int n) {
+    static double[] principalSpreads(PositionColumns p, int n) {
         double mx = 0;
         double my = 0;
         double mz = 0;

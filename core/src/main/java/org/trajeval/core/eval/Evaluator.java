@@ -55,7 +55,7 @@ public final class Evaluator {
 
     /**
      * As {@link #evaluate(LoadedTrajectory, LoadedTrajectory, EvaluationOptions)}, with the
-     * element-wise passes of the planar fast path (interpolation, errors, RPE pairs) spread over
+     * element-wise passes of the columnar evaluator (interpolation, errors, RPE pairs) spread over
      * the given threads. The numbers do not depend on the thread count.
      */
     public static EvaluationReport evaluate(LoadedTrajectory reference, LoadedTrajectory estimate,
@@ -63,24 +63,14 @@ public final class Evaluator {
         if (options.timeOffset() == TimeOffset.AUTO) {
             return withEstimatedOffset(reference, estimate, options, parallelism);
         }
-        if (PlanarEvaluator.applies(reference, estimate, options)) {
-            PlanarEvaluator.ReportParts p = PlanarEvaluator.evaluate((PlanarTrajectory) reference.trajectory(),
-                    (PlanarTrajectory) estimate.trajectory(), options, estimate.source(), parallelism);
+        if (ColumnarEvaluator.applies(reference, estimate, options)) {
+            ColumnarEvaluator.ReportParts p = ColumnarEvaluator.evaluate(reference.trajectory(),
+                    estimate.trajectory(), options, reference.source(), estimate.source(), parallelism);
             if (p != null) {
-                Trajectory ref = reference.trajectory();
-                Trajectory est = estimate.trajectory();
-                double off = options.tOffsetS();
-                int k0 = 0;
-                while (est.t(k0) + off < ref.t(0)) {
-                    k0++;
-                }
-                int first = k0;
-                Coverage coverage = Coverage.compute(k -> est.t(first + k) + off, p.matched(), ref.t(0),
-                        ref.t(ref.size() - 1));
-                return report(reference, estimate, options, p.matched(), p.dropped(), 0, p.maxGapS(), p.aMaxMps2(),
-                        p.alignment(), p.ateTrans(), p.ateRot(), p.rpeTrans(), p.rpeRot(), p.pairs(),
-                        p.meanHorizonS(), p.meanHorizonM(), null, options.maxGap().limitS(ref), List.of(), coverage,
-                        scaleOnly(p.alignment()));
+                return report(reference, estimate, options, p.matched(), p.dropped(), p.droppedReference(),
+                        p.maxGapS(), p.aMaxMps2(), p.alignment(), p.ateTrans(), p.ateRot(), p.rpeTrans(), p.rpeRot(),
+                        p.pairs(), p.meanHorizonS(), p.meanHorizonM(), null, p.gapLimitS(), List.of(), p.coverage(),
+                        p.alignmentWarnings());
             }
         }
         return run(reference, estimate, options).report();
@@ -164,7 +154,7 @@ public final class Evaluator {
                 options.nToAlign(), estimate.source());
         boolean planarData = ref instanceof PlanarTrajectory && est instanceof PlanarTrajectory;
         List<EvaluationReport.Warning> alignmentWarnings = AlignmentCheck.check(alignment, assoc.reference(),
-                assoc.estimate(), planarData);
+                assoc.estimate(), assoc.size(), planarData);
         PoseSequence refPoses = assoc.reference();
         PoseSequence estPoses = alignment.apply(assoc.estimate());
         if (options.projection() == PlanarProjection.XY_AFTER_ALIGNMENT
@@ -283,11 +273,6 @@ public final class Evaluator {
                 new EvaluationReport.Inputs(input(reference), input(estimate)), associationInfo, alignmentInfo,
                 new EvaluationReport.Ate(EvaluationReport.Stats.of(ateTrans), EvaluationReport.Stats.of(ateRot)),
                 rpeInfo, driftInfo, coverageInfo, warnings, timeBase, null);
-    }
-
-    private static List<EvaluationReport.Warning> scaleOnly(AlignmentTransform tf) {
-        EvaluationReport.Warning w = AlignmentCheck.scale(tf);
-        return w == null ? List.of() : List.of(w);
     }
 
     private static EvaluationReport.InputInfo input(LoadedTrajectory t) {

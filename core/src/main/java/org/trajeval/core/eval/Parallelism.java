@@ -49,8 +49,12 @@ public record Parallelism(ExecutorService executor, int threads) {
         forEach(chunks(n), c -> work.run(c, c * CHUNK, (int) Math.min((long) (c + 1) * CHUNK, n)));
     }
 
-    /** Runs {@code task} for every index in [0, tasks), on up to {@link #threads()} threads; returns when all are done. */
-    void forEach(int tasks, java.util.function.IntConsumer task) {
+    /**
+     * Runs {@code task} for every index in [0, tasks), on up to {@link #threads()} threads (the
+     * caller's included), each index once, in no fixed order; returns when all are done. The first
+     * exception of a task is rethrown after every thread has stopped.
+     */
+    public void forEach(int tasks, java.util.function.IntConsumer task) {
         if (threads == 1 || tasks < 2) {
             for (int c = 0; c < tasks; c++) {
                 task.accept(c);

@@ -52,10 +52,10 @@ final class EurocReader {
                     throw poses.orderProblem(code, row[0], line, rows.selectedText(0));
                 }
             }
-            double[][] c = poses.finish("it holds only comment or blank lines");
+            double[][] c = poses.finishUntrimmed("it holds only comment or blank lines");
             String sha = lines.finishSha256();
             return new LoadedTrajectory(source, TrajectoryFormat.EUROC, reason,
-                    SpatialTrajectory.of(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]), sha, false);
+                    SpatialTrajectory.ofFirst(poses.size(), c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]), sha, false);
         }
     }
 }

@@ -28,7 +28,7 @@ final class FormatDetector {
     static final int HEAD_BYTES = 1 << 16;
     /** Smallest first stamp taken for EuRoC nanoseconds (1e17 ns is 1973). */
     static final double NANOSECOND_STAMP = 1e17;
-    private static final String CHOICES = "pass --format csv|tum|kitti|euroc";
+    private static final String CHOICES = "pass --format csv|tum|kitti|euroc|nclt|robotcar-ins|robotcar-vo|icl-nuim";
 
     /**
      * @param format the format chosen
@@ -83,6 +83,16 @@ final class FormatDetector {
         }
         if (firstNonBlank == null && complete) {
             throw FileProblems.empty(source, "it holds only blank lines");
+        }
+        if (firstNonBlank != null && firstNonBlank.replace(" ", "").startsWith("timestamp,ins_status,")) {
+            return new Detection(TrajectoryFormat.ROBOTCAR_INS, "auto: header 'timestamp,ins_status,...' (RobotCar INS)");
+        }
+        if (firstNonBlank != null && firstNonBlank.replace(" ", "").startsWith("source_timestamp,destination_timestamp,")) {
+            return new Detection(TrajectoryFormat.ROBOTCAR_VO, "auto: header 'source_timestamp,destination_timestamp,"
+                    + "...' (RobotCar VO)");
+        }
+        if (name.endsWith(".gt.freiburg")) {
+            return new Detection(TrajectoryFormat.ICL_NUIM, "auto: name *.gt.freiburg (ICL-NUIM ground truth)");
         }
         if (firstNonBlank != null && isEurocHeader(firstNonBlank)) {
             return new Detection(TrajectoryFormat.EUROC, "auto: first line starts with '#timestamp' (EuRoC header)");

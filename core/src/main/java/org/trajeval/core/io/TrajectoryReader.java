@@ -56,6 +56,8 @@ public final class TrajectoryReader {
             case TUM -> TumReader.read(path, source, options, reason);
             case KITTI -> KittiReader.read(path, source, options, reason);
             case EUROC -> EurocReader.read(path, source, options, reason);
+            case NCLT, ROBOTCAR_INS, ROBOTCAR_VO -> EulerPoseReader.read(path, source, options, reason, format);
+            case ICL_NUIM -> IclNuimReader.read(path, source, options, reason);
             case BAG -> throw BagTopics.needed(path, source);
         };
     }

@@ -31,10 +31,10 @@ final class TumReader {
             while (readBatch(rows, poses, in, row, tolerance, source)) {
                 // batches: compiled early as a whole method (see CsvTrajectoryReader.readBatch)
             }
-            double[][] c = poses.finish("it holds only comment or blank lines");
+            double[][] c = poses.finishUntrimmed("it holds only comment or blank lines");
             String sha = lines.finishSha256();
             return new LoadedTrajectory(source, TrajectoryFormat.TUM, reason,
-                    SpatialTrajectory.of(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]), sha, false);
+                    SpatialTrajectory.ofFirst(poses.size(), c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]), sha, false);
         }
     }
 

@@ -6,7 +6,7 @@ import org.trajeval.core.traj.PoseSequence;
  * SE(3) products used by RPE and drift, evaluated in evo's operation order so that results
  * agree to the last digits: inv(T) = [R^T, -R^T t]; A B = [R_A R_B, R_A t_B + t_A].
  */
-final class RelativeMotion {
+public final class RelativeMotion {
     private RelativeMotion() {
     }
 
@@ -27,7 +27,7 @@ final class RelativeMotion {
      * out = inv(A) B for A = [ra | ta], B = [rb | tb]: rotation ra^T rb, translation
      * ra^T tb + (-ra^T ta).
      */
-    static void inverseTimes(double[] ra, double tax, double tay, double taz, double[] rb, double tbx, double tby,
+    public static void inverseTimes(double[] ra, double tax, double tay, double taz, double[] rb, double tbx, double tby,
             double tbz, double[] out) {
         for (int r = 0; r < 3; r++) {
             for (int c = 0; c < 3; c++) {

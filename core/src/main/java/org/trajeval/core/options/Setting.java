@@ -18,13 +18,15 @@ import org.trajeval.core.InputProblem;
  * read and evaluation options; a new setting is a constant here and a line there.
  */
 public enum Setting {
-    FORMAT("format", "--format", SettingKind.CHOICE, SettingScope.READ_BOTH, "auto|csv|tum|kitti|euroc", "",
+    FORMAT("format", "--format", SettingKind.CHOICE, SettingScope.READ_BOTH,
+            "auto|csv|tum|kitti|euroc|nclt|robotcar-ins|robotcar-vo|icl-nuim", "",
             "all", "Format of both files (default auto: detected from extension and content; the report says what "
-            + "was chosen and why)."),
+            + "was chosen and why). nclt, robotcar-ins, robotcar-vo and icl-nuim read those datasets' own files "
+            + "(README, \"Datasets\")."),
     REF_FORMAT("ref_format", "--ref-format", SettingKind.CHOICE, SettingScope.READ_REFERENCE,
-            "auto|csv|tum|kitti|euroc", "", "all", "Format of the reference when the two differ."),
+            "auto|csv|tum|kitti|euroc|nclt|robotcar-ins|robotcar-vo|icl-nuim", "", "all", "Format of the reference when the two differ."),
     EST_FORMAT("est_format", "--est-format", SettingKind.CHOICE, SettingScope.READ_ESTIMATE,
-            "auto|csv|tum|kitti|euroc", "", "all", "Format of the estimate when the two differ."),
+            "auto|csv|tum|kitti|euroc|nclt|robotcar-ins|robotcar-vo|icl-nuim", "", "all", "Format of the estimate when the two differ."),
     TIME_UNIT("time_unit", "--time-unit", SettingKind.CHOICE, SettingScope.READ_BOTH, "s|ms|us|ns", "",
             "csv", "Unit of CSV timestamps (default s)."),
     COLUMNS("columns", "--columns", SettingKind.TEXT, SettingScope.READ_BOTH, "T,X,Y,YAW", "",
@@ -52,6 +54,10 @@ public enum Setting {
     POSE_FIELD("pose_field", "--pose-field", SettingKind.TEXT, SettingScope.READ_BOTH, "FIELD.PATH", "", "bag",
             "Field of a bag message type holding the pose (a geometry_msgs Pose or Transform), for types trajeval "
             + "does not know (it knows PoseStamped, PoseWithCovarianceStamped, TransformStamped, Odometry, Path)."),
+    BAG_CRC("bag_crc", "--bag-crc", SettingKind.CHOICE, SettingScope.READ_BOTH, "all|chunks", "", "bag",
+            "Checksums an MCAP bag must pass: all (default: the data section CRC too, one sequential pass over the "
+            + "file) or chunks (the summary and the chunks read only: faster when the bag is much larger than its "
+            + "pose topics). A CRC of 0 is 'not computed' and never compared."),
     CONVENTION("convention", "--convention", SettingKind.CHOICE, SettingScope.EVALUATION, "lesson|evo|kitti", "",
             "all", "Preset of rules (default lesson; evo when a bag topic is given). lesson: interpolated association, crop, se2/se3 alignment "
             + "(se2 for planar data, se3 for SE(3) data), RPE over 1 s for every start pose; evo: nearest within "
@@ -103,7 +109,10 @@ public enum Setting {
     DRIFT_SEGMENT_LENGTHS_M("drift_segment_lengths_m", "--drift-lengths", SettingKind.NUMBERS,
             SettingScope.EVALUATION, "M,M,...", "m", "all", "Drift segment lengths (m; default 100,200,...,800)."),
     DRIFT_STEP_FRAMES("drift_step_frames", "--drift-step", SettingKind.INTEGER, SettingScope.EVALUATION, "FRAMES",
-            "frames", "all", "Frames between drift segment starts (>= 1; default 10).");
+            "frames", "all", "Frames between drift segment starts (>= 1; default 10)."),
+    SUBTRAJ_LENGTHS_M("subtraj_lengths_m", "--subtraj-lengths", SettingKind.NUMBERS, SettingScope.EVALUATION,
+            "M,M,...", "m", "all", "Sub-trajectory lengths of the relative errors per length that plots draw and "
+            + "saved series keep (m; default 10,20,30,40,50 % of the reference path; KITTI's segment rule).");
 
     private static final Pattern DECIMAL = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d{1,3})?");
     private static final Pattern WHOLE = Pattern.compile("[+-]?\\d{1,18}");

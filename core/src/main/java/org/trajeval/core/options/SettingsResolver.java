@@ -16,6 +16,7 @@ import org.trajeval.core.io.ReadOptions;
 import org.trajeval.core.io.TimeUnit;
 import org.trajeval.core.io.TimestampOrder;
 import org.trajeval.core.io.TrajectoryFormat;
+import org.trajeval.core.io.bag.BagIntegrity;
 import org.trajeval.core.io.bag.BagReadOptions;
 import org.trajeval.core.io.bag.StampSource;
 import org.trajeval.core.metric.DriftOptions;
@@ -54,7 +55,7 @@ public final class SettingsResolver {
         Setting ownFormat = role == FileRole.REFERENCE ? Setting.REF_FORMAT : Setting.EST_FORMAT;
         String format = (String) (s.has(ownFormat) ? s.get(ownFormat) : s.get(Setting.FORMAT));
         ReadOptions o = base.withFormat(format == null || format.equals("auto") ? null
-                : TrajectoryFormat.valueOf(format.toUpperCase(Locale.ROOT)));
+                : TrajectoryFormat.valueOf(format.toUpperCase(Locale.ROOT).replace('-', '_')));
         CsvLayout d = base.csv();
         String[] columns = (String[]) s.get(Setting.COLUMNS);
         String delimiter = (String) s.get(Setting.DELIMITER);
@@ -71,12 +72,13 @@ public final class SettingsResolver {
                 : convention(s) == Convention.EVO ? DuplicateTimestamps.KEEP : DuplicateTimestamps.REFUSE;
         o = o.withDuplicates(dup);
         Setting topic = role == FileRole.REFERENCE ? Setting.REF_TOPIC : Setting.EST_TOPIC;
-        if (s.has(topic) || s.has(Setting.STAMPS) || s.has(Setting.POSE_FIELD)) {
+        if (s.has(topic) || s.has(Setting.STAMPS) || s.has(Setting.POSE_FIELD) || s.has(Setting.BAG_CRC)) {
             BagReadOptions b = base.bag() != null ? base.bag() : BagReadOptions.DEFAULT;
             o = o.withBag(new BagReadOptions(s.has(topic) ? (String) s.get(topic) : b.topic(),
                     s.has(Setting.STAMPS) ? ("log".equals(s.get(Setting.STAMPS)) ? StampSource.LOG_TIME
                             : StampSource.HEADER) : b.stamps(),
-                    s.has(Setting.POSE_FIELD) ? (String) s.get(Setting.POSE_FIELD) : b.poseField(), b.limits()));
+                    s.has(Setting.POSE_FIELD) ? (String) s.get(Setting.POSE_FIELD) : b.poseField(), b.limits(),
+                    s.has(Setting.BAG_CRC) ? BagIntegrity.valueOf(upper(Setting.BAG_CRC, s)) : b.integrity()));
         }
         Setting times = role == FileRole.REFERENCE ? Setting.REF_TIMES : Setting.EST_TIMES;
         if (s.has(times)) {
@@ -182,6 +184,14 @@ public final class SettingsResolver {
                 : base.segmentLengthsM();
         int step = s.has(Setting.DRIFT_STEP_FRAMES) ? (Integer) s.get(Setting.DRIFT_STEP_FRAMES) : base.stepFrames();
         return o.withDrift(new DriftOptions(lengths, step));
+    }
+
+    /**
+     * @return the lengths of the relative errors per sub-trajectory length (m), or null for the
+     *     default (10 ... 50 % of the reference path, {@code SubTrajectoryErrors})
+     */
+    public static double[] subTrajectoryLengthsM(SettingValues s) {
+        return s.has(Setting.SUBTRAJ_LENGTHS_M) ? ((double[]) s.get(Setting.SUBTRAJ_LENGTHS_M)).clone() : null;
     }
 
     private static String upper(Setting setting, SettingValues s) {

@@ -3,11 +3,13 @@ package org.trajeval.core.protocol;
 import java.util.Objects;
 
 /**
- * The compute budget B of the protocol (lesson section 4): recorded and reported, not enforced.
+ * The compute budget B of the protocol (lesson section 4). Recorded in the report, and checked run by
+ * run when the manifest names a resources table ({@link BudgetCheck}).
  *
  * @param device cpu or gpu
  * @param cores CPU cores the methods were allowed, or {@code null} when not stated
- * @param realTimeFactor processing time / data duration the methods had to meet (dimensionless, &gt; 0)
+ * @param realTimeFactor smallest real-time factor a run must achieve: the data's duration over the run's wall
+ *     time (dimensionless, &gt; 0; 1 = real time, 2 = twice as fast as real time)
  * @param memoryCapMib memory cap (MiB, &gt; 0)
  */
 public record Budget(String device, Integer cores, double realTimeFactor, long memoryCapMib) {

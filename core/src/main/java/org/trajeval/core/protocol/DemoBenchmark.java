@@ -99,7 +99,7 @@ public final class DemoBenchmark {
         }
     }
 
-    private static long mix(long seed, String method, int sequence, long runSeed) {
+    static long mix(long seed, String method, int sequence, long runSeed) {
         long h = seed * 0x9E3779B97F4A7C15L;
         h ^= method.hashCode() * 0xC2B2AE3D27D4EB4FL;
         h ^= (sequence + 1) * 0x165667B19E3779F9L;
@@ -107,33 +107,38 @@ public final class DemoBenchmark {
         return h;
     }
 
-    /** A smooth path with per-sequence shape, yaw from the central-difference velocity. */
+    /** A smooth path of {@link #POSES} poses. */
     private static double[][] reference(SplittableRandom rng) {
+        return reference(rng, POSES);
+    }
+
+    /** A smooth path of {@code poses} poses 0.1 s apart, per-sequence shape, yaw from the central-difference velocity. */
+    static double[][] reference(SplittableRandom rng, int poses) {
         double v = 0.4 + 0.2 * rng.nextDouble();
         double a = 1.5 + rng.nextDouble();
         double w = 0.1 + 0.1 * rng.nextDouble();
         double b = 1.0 + rng.nextDouble();
         double w2 = 0.08 + 0.06 * rng.nextDouble();
         double phi = rng.nextDouble() * Math.PI;
-        double[] t = new double[POSES];
-        double[] x = new double[POSES];
-        double[] y = new double[POSES];
-        double[] yaw = new double[POSES];
-        for (int i = 0; i < POSES; i++) {
+        double[] t = new double[poses];
+        double[] x = new double[poses];
+        double[] y = new double[poses];
+        double[] yaw = new double[poses];
+        for (int i = 0; i < poses; i++) {
             t[i] = i * DT_S;
             x[i] = v * t[i] + a * Math.sin(w * t[i] + phi);
             y[i] = b * Math.cos(w2 * t[i] + phi);
         }
-        for (int i = 0; i < POSES; i++) {
+        for (int i = 0; i < poses; i++) {
             int i0 = Math.max(0, i - 1);
-            int i1 = Math.min(POSES - 1, i + 1);
+            int i1 = Math.min(poses - 1, i + 1);
             yaw[i] = Math.atan2(y[i1] - y[i0], x[i1] - x[i0]);
         }
         return new double[][] {t, x, y, yaw};
     }
 
     /** Drift + noise + time warp, then an unknown rigid motion of the estimate's frame. */
-    private static double[][] estimate(double[][] ref, SplittableRandom rng, double driftMps, double noiseM,
+    static double[][] estimate(double[][] ref, SplittableRandom rng, double driftMps, double noiseM,
             double yawNoiseRad) {
         double theta = (rng.nextDouble() - 0.5) * Math.toRadians(40);
         double ox = (rng.nextDouble() - 0.5) * 4.0;

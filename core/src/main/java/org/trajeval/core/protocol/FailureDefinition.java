@@ -9,13 +9,37 @@ package org.trajeval.core.protocol;
  *     span covered by the estimate's time span
  * @param maxAteTransRmseM largest accepted ATE translation RMSE (m), &gt; 0
  * @param divergenceTransM a single ATE translation error above this (m, &gt; 0) means the run diverged
+ * @param budget what a run over the budget is: a failure (default) or a warning
+ * @param breakdownRate failure rate in (0, 1] at which a method has broken down at a factor level
+ *     (stress sweeps; default {@link #DEFAULT_BREAKDOWN_RATE})
  */
-public record FailureDefinition(Double minCoverage, Double maxAteTransRmseM, Double divergenceTransM) {
+public record FailureDefinition(Double minCoverage, Double maxAteTransRmseM, Double divergenceTransM,
+        BudgetPolicy budget, double breakdownRate) {
+    /** Default failure rate of a breakdown. */
+    public static final double DEFAULT_BREAKDOWN_RATE = 0.5;
+
     /** No thresholds: only missing, unreadable or refused estimates fail. */
     public static final FailureDefinition NONE = new FailureDefinition(null, null, null);
 
+    /** What a run over the budget is. */
+    public enum BudgetPolicy {
+        /** A failed run of reason {@code budget} (scores 0). */
+        FAIL,
+        /** A warning; the run keeps its status. */
+        WARN
+    }
+
+    /** Thresholds only: budget violations fail, breakdown at 0.5. */
+    public FailureDefinition(Double minCoverage, Double maxAteTransRmseM, Double divergenceTransM) {
+        this(minCoverage, maxAteTransRmseM, divergenceTransM, BudgetPolicy.FAIL, DEFAULT_BREAKDOWN_RATE);
+    }
+
     /** @throws IllegalArgumentException on a threshold out of range */
     public FailureDefinition {
+        java.util.Objects.requireNonNull(budget, "budget");
+        if (!(breakdownRate > 0.0 && breakdownRate <= 1.0)) {
+            throw new IllegalArgumentException("breakdown_rate must be in (0, 1], got " + breakdownRate);
+        }
         if (minCoverage != null && !(minCoverage >= 0.0 && minCoverage <= 1.0)) {
             throw new IllegalArgumentException("min_coverage must be in [0, 1], got " + minCoverage);
         }
@@ -40,7 +64,9 @@ public record FailureDefinition(Double minCoverage, Double maxAteTransRmseM, Dou
         /** ATE translation RMSE above {@code max_ate_trans_rmse_m}. */
         ATE_ABOVE_THRESHOLD,
         /** A translation error above {@code divergence_trans_m}, or a non-finite metric. */
-        DIVERGED
+        DIVERGED,
+        /** The run needed more time or memory than the budget allows, or ran on another device. */
+        BUDGET
     }
 
     /**

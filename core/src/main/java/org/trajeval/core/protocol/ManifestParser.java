@@ -23,6 +23,8 @@ import org.trajeval.core.InputProblem;
 import org.trajeval.core.io.StrictMappers;
 import org.trajeval.core.io.TextFiles;
 import org.trajeval.core.options.DataKind;
+import org.trajeval.core.options.RunField;
+import org.trajeval.core.options.RunMetadata;
 import org.trajeval.core.options.Setting;
 import org.trajeval.core.options.SettingText;
 import org.trajeval.core.options.SettingValues;
@@ -52,7 +54,10 @@ import org.trajeval.core.options.SettingsTree;
  *   - {metric: ate_trans_rmse_m, cap: 2.0, weight: 0.5}
  *   - {metric: rpe_trans_rmse_m, cap: 0.8, weight: 0.5}
  * budget: {device: cpu, cores: 4, real_time_factor: 1.0, memory_cap_mib: 4096}
+ * resources: resources.csv     # optional: method,sequence,seed,wall_time_s,peak_memory_mib per run
  * </pre>
+ * A sequence may also carry the description fields of {@link RunField} ({@code domain: sim},
+ * {@code scenario: corridor}, {@code factors: {obstacle_density: 0.4}}, ...).
  */
 public final class ManifestParser {
     private static final Pattern ID = Pattern.compile("[A-Za-z0-9][A-Za-z0-9._-]*");
@@ -222,7 +227,7 @@ public final class ManifestParser {
 
         SuiteManifest manifest(Node root) {
             allowOnly(root, "format", "version", "name", "seeds", "sequences", "methods", "evaluated_splits",
-                    "metrics", "failure", "score", "budget");
+                    "metrics", "failure", "score", "budget", "resources");
             Node format = required(root, "format");
             if (!SuiteManifest.FORMAT.equals(format.json().asText())) {
                 throw bad(format.path(), "expected " + SuiteManifest.FORMAT, format.json());
@@ -263,7 +268,10 @@ public final class ManifestParser {
             FailureDefinition failure = failure(optional(root, "failure"));
             NormalisedScore score = score(required(root, "score"), metrics);
             Budget budget = budget(required(root, "budget"));
-            return new SuiteManifest(name, sequences, methods, seeds, splits, metrics, failure, score, budget);
+            Node res = optional(root, "resources");
+            String resources = res == null ? null : relativePath(res, text(res, "a resources CSV file path"));
+            return new SuiteManifest(name, sequences, methods, seeds, splits, metrics, failure, score, budget,
+                    resources);
         }
 
         List<Long> seeds(Node n) {
@@ -281,7 +289,9 @@ public final class ManifestParser {
             List<SequenceSpec> out = new ArrayList<>();
             Set<String> ids = new HashSet<>();
             for (Node s : list(n, "sequences", true)) {
-                allowOnly(s, "id", "session", "reference", "split", "tags", "settings");
+                List<String> keys = new ArrayList<>(List.of("id", "session", "reference", "split", "tags", "settings"));
+                keys.addAll(RunField.keys());
+                allowOnly(s, keys.toArray(new String[0]));
                 Node idNode = required(s, "id");
                 String id = id(idNode, "a sequence id");
                 if (!ids.add(id)) {
@@ -303,7 +313,11 @@ public final class ManifestParser {
                     }
                 }
                 Node set = optional(s, "settings");
-                out.add(new SequenceSpec(id, session, reference, split, tags, set == null ? List.of() : settings(set)));
+                @SuppressWarnings("unchecked")
+                Map<String, Object> fields = TREE.convertValue(s.json(), Map.class);
+                RunMetadata about = RunMetadata.parse(fields, s.path(), source);
+                out.add(new SequenceSpec(id, session, reference, split, tags, set == null ? List.of() : settings(set),
+                        about));
             }
             return out;
         }
@@ -366,7 +380,7 @@ public final class ManifestParser {
             if (n == null) {
                 return FailureDefinition.NONE;
             }
-            allowOnly(n, "min_coverage", "max_ate_trans_rmse_m", "divergence_trans_m");
+            allowOnly(n, "min_coverage", "max_ate_trans_rmse_m", "divergence_trans_m", "budget", "breakdown_rate");
             Double cov = null;
             Node c = optional(n, "min_coverage");
             if (c != null) {
@@ -377,7 +391,24 @@ public final class ManifestParser {
             }
             Double ate = positive(optional(n, "max_ate_trans_rmse_m"), "a distance > 0 (m)");
             Double div = positive(optional(n, "divergence_trans_m"), "a distance > 0 (m)");
-            return new FailureDefinition(cov, ate, div);
+            FailureDefinition.BudgetPolicy policy = FailureDefinition.BudgetPolicy.FAIL;
+            Node b = optional(n, "budget");
+            if (b != null) {
+                String w = b.json().isTextual() ? b.json().asText() : "";
+                if (!w.equals("fail") && !w.equals("warn")) {
+                    throw bad(b.path(), "expected fail or warn (what a run over the budget is)", b.json());
+                }
+                policy = w.equals("warn") ? FailureDefinition.BudgetPolicy.WARN : FailureDefinition.BudgetPolicy.FAIL;
+            }
+            double rate = FailureDefinition.DEFAULT_BREAKDOWN_RATE;
+            Node r = optional(n, "breakdown_rate");
+            if (r != null) {
+                rate = number(r, "a failure rate in (0, 1]");
+                if (!(rate > 0.0 && rate <= 1.0)) {
+                    throw bad(r.path(), "expected a failure rate in (0, 1]", r.json());
+                }
+            }
+            return new FailureDefinition(cov, ate, div, policy, rate);
         }
 
         Double positive(Node n, String what) {

@@ -5,6 +5,7 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.function.BiFunction;
 import org.trajeval.core.report.SuiteReport.Bounds;
 import org.trajeval.core.report.SuiteReport.Comparison;
 import org.trajeval.core.report.SuiteReport.Paired;
@@ -109,18 +110,43 @@ public final class RegressionGate {
      */
     public static Finding gate(String method, List<RunEntry> baseline, List<RunEntry> candidate,
             List<String> sequences, String metric, double tolerance, Settings settings, int stream) {
-        if (!(tolerance >= 0 && Double.isFinite(tolerance))) {
-            throw new IllegalArgumentException("tolerance must be a finite fraction >= 0, found " + tolerance);
-        }
+        requireTolerance(tolerance);
         Set<String> inBase = new HashSet<>();
         baseline.forEach(r -> inBase.add(r.sequence() + "\u0000" + r.seed()));
         Set<String> inCand = new HashSet<>();
         candidate.forEach(r -> inCand.add(r.sequence() + "\u0000" + r.seed()));
         List<RunEntry> b = baseline.stream().filter(r -> inCand.contains(r.sequence() + "\u0000" + r.seed())).toList();
         List<RunEntry> c = candidate.stream().filter(r -> inBase.contains(r.sequence() + "\u0000" + r.seed())).toList();
-        SuiteAnalysis.Settings two = new SuiteAnalysis.Settings(settings.seed(), 2 * settings.confidence() - 1,
-                settings.resamples());
-        Comparison cmp = SuiteAnalysis.compare("candidate", c, "baseline", b, sequences, metric, two, stream);
+        SuiteAnalysis.Settings two = twoSided(settings);
+        return decide(method, metric, tolerance, SuiteAnalysis.compare("candidate", c, "baseline", b, sequences, metric,
+                two, stream));
+    }
+
+    /**
+     * Gates one method on one metric from per-sequence means formed elsewhere (the store pairs and
+     * averages in SQL): the same rule as {@link #gate}, given what it would have paired.
+     *
+     * @param perSequence per paired sequence: a = the candidate's mean over the common seeds, b = the
+     *     baseline's, difference = a - b (metric unit); in a fixed order (the bootstrap resamples by index)
+     */
+    public static Finding gatePaired(String method, String metric, double tolerance, List<Paired> perSequence,
+            Settings settings, int stream) {
+        requireTolerance(tolerance);
+        return decide(method, metric, tolerance, SuiteAnalysis.compare("candidate", "baseline", metric, perSequence,
+                twoSided(settings), stream));
+    }
+
+    private static SuiteAnalysis.Settings twoSided(Settings settings) {
+        return new SuiteAnalysis.Settings(settings.seed(), 2 * settings.confidence() - 1, settings.resamples());
+    }
+
+    private static void requireTolerance(double tolerance) {
+        if (!(tolerance >= 0 && Double.isFinite(tolerance))) {
+            throw new IllegalArgumentException("tolerance must be a finite fraction >= 0, found " + tolerance);
+        }
+    }
+
+    private static Finding decide(String method, String metric, double tolerance, Comparison cmp) {
         boolean higher = SuiteAnalysis.SCORE.equals(metric);
         int n = cmp.n();
         double baseMean = mean(cmp.perSequence(), false);
@@ -155,8 +181,7 @@ public final class RegressionGate {
     public static List<Finding> gateAll(List<RunEntry> baseline, List<RunEntry> candidate, List<String> methods,
             List<String> sequences, Map<String, Double> tolerances, Settings settings) {
         List<Finding> out = new ArrayList<>();
-        int k = Math.max(1, methods.size() * tolerances.size());
-        Settings each = new Settings(1 - (1 - settings.confidence()) / k, settings.seed(), settings.resamples());
+        Settings each = eachOf(settings, methods.size() * tolerances.size());
         int stream = 0;
         for (String m : methods) {
             List<RunEntry> b = baseline.stream().filter(r -> r.method().equals(m)).toList();
@@ -166,6 +191,32 @@ public final class RegressionGate {
             }
         }
         return out;
+    }
+
+    /**
+     * {@link #gateAll} on per-sequence means formed elsewhere: the same Bonferroni share and bootstrap
+     * streams, so the same pairs give the same findings.
+     *
+     * @param methods methods to gate, in output order
+     * @param tolerances metric key to allowed relative worsening, in output order
+     * @param perSequence (method, metric) to its paired per-sequence means (see {@link #gatePaired})
+     */
+    public static List<Finding> gateAllPaired(List<String> methods, Map<String, Double> tolerances,
+            BiFunction<String, String, List<Paired>> perSequence, Settings settings) {
+        List<Finding> out = new ArrayList<>();
+        Settings each = eachOf(settings, methods.size() * tolerances.size());
+        int stream = 0;
+        for (String m : methods) {
+            for (Map.Entry<String, Double> t : tolerances.entrySet()) {
+                out.add(gatePaired(m, t.getKey(), t.getValue(), perSequence.apply(m, t.getKey()), each, stream++));
+            }
+        }
+        return out;
+    }
+
+    /** @return the settings of one of k gated pairs: C' = 1 - (1 - C) / k (Bonferroni) */
+    private static Settings eachOf(Settings settings, int k) {
+        return new Settings(1 - (1 - settings.confidence()) / Math.max(1, k), settings.seed(), settings.resamples());
     }
 
     private static double mean(List<Paired> ps, boolean candidate) {

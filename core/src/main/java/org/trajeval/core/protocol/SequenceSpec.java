@@ -2,6 +2,7 @@ package org.trajeval.core.protocol;
 
 import java.util.List;
 import java.util.Objects;
+import org.trajeval.core.options.RunMetadata;
 import org.trajeval.core.options.SettingText;
 
 /**
@@ -15,11 +16,19 @@ import org.trajeval.core.options.SettingText;
  * @param tags environment tags (e.g. indoor, night), in manifest order
  * @param settings evaluation settings of this sequence's runs on top of the suite's {@code metrics}
  *     (e.g. {@code ref_times}, {@code ref_format}), in manifest order
+ * @param about what the data is: domain, simulator, scenario, factor levels, taxonomy ({@link RunMetadata})
  */
 public record SequenceSpec(String id, String session, String reference, Split split, List<String> tags,
-        List<SettingText> settings) {
+        List<SettingText> settings, RunMetadata about) {
+    /** A sequence without description fields. */
+    public SequenceSpec(String id, String session, String reference, Split split, List<String> tags,
+            List<SettingText> settings) {
+        this(id, session, reference, split, tags, settings, RunMetadata.NONE);
+    }
+
     /** @throws NullPointerException on a missing component */
     public SequenceSpec {
+        Objects.requireNonNull(about, "about");
         Objects.requireNonNull(id, "id");
         Objects.requireNonNull(session, "session");
         Objects.requireNonNull(reference, "reference");

@@ -99,13 +99,7 @@ public final class SuiteAnalysis {
             }
             scores[i] = runs.get(i).score();
         }
-        SuiteReport.Proportion rate = null;
-        if (!runs.isEmpty()) {
-            Interval w = BinomialInterval.WILSON.of(failures, runs.size(), level);
-            Interval cp = BinomialInterval.CLOPPER_PEARSON.of(failures, runs.size(), level);
-            rate = new SuiteReport.Proportion(w.estimate(), level, new Bounds(w.lower(), w.upper()),
-                    new Bounds(cp.lower(), cp.upper()), clustered(sequences, runs, level));
-        }
+        SuiteReport.Proportion rate = failureRate(sequences, runs, level);
         List<SequenceSummary> scorePerSeq = new ArrayList<>();
         double[][] scoreGroups = new double[sequences.size()][];
         for (int i = 0; i < sequences.size(); i++) {
@@ -132,6 +126,21 @@ public final class SuiteAnalysis {
         return new MethodSummary(method, runs.size(), failures, rate,
                 new SuiteReport.Summary(sc.n(), nullable(sc.mean()), nullable(sc.sd())), scorePerSeq, metrics,
                 variance(scoreGroups));
+    }
+
+    /**
+     * The failure rate f/n of some runs with its Wilson, Clopper-Pearson and clustered (Korn-Graubard,
+     * seeds of one sequence as a cluster) intervals; null without runs.
+     */
+    static SuiteReport.Proportion failureRate(List<String> sequences, List<RunEntry> runs, double level) {
+        if (runs.isEmpty()) {
+            return null;
+        }
+        int failures = (int) runs.stream().filter(r -> !r.ok()).count();
+        Interval w = BinomialInterval.WILSON.of(failures, runs.size(), level);
+        Interval cp = BinomialInterval.CLOPPER_PEARSON.of(failures, runs.size(), level);
+        return new SuiteReport.Proportion(w.estimate(), level, new Bounds(w.lower(), w.upper()),
+                new Bounds(cp.lower(), cp.upper()), clustered(sequences, runs, level));
     }
 
     /** Korn-Graubard interval of the failure rate with the runs clustered by sequence. */
@@ -191,6 +200,23 @@ public final class SuiteAnalysis {
                 pairs.add(new Paired(s, ma, mb, ma - mb));
             }
         }
+        return compare(methodA, methodB, key, pairs, settings, stream);
+    }
+
+    /**
+     * Paired comparison from per-sequence means already formed (e.g. aggregated in a database):
+     * the same statistics as {@link #compare(String, List, String, List, List, String, Settings, int)}
+     * over d_s = a_s - b_s, in the order given (the bootstrap resamples by index).
+     *
+     * @param methodA label of method A
+     * @param methodB label of method B
+     * @param key metric key, or {@link #SCORE}
+     * @param pairs per sequence: a = A's mean, b = B's mean, difference = a - b
+     * @param settings statistics settings
+     * @param stream index of this comparison, mixed into the bootstrap seed
+     */
+    public static Comparison compare(String methodA, String methodB, String key, List<Paired> pairs,
+            Settings settings, int stream) {
         int n = pairs.size();
         double[] d = pairs.stream().mapToDouble(Paired::difference).toArray();
         Double mean = n == 0 ? null : SampleSummary.of(d).mean();

@@ -17,11 +17,20 @@ import org.trajeval.core.options.SettingValues;
  * @param metrics how each run is read and evaluated (the settings table; a sequence or method may add more)
  * @param failure what counts as a failed run
  * @param score the normalised score (Proposition 3)
- * @param budget the compute budget (recorded)
+ * @param budget the compute budget (checked against {@code resources} when given)
+ * @param resources path of the resources CSV (one row per run: wall time, peak memory), relative to the
+ *     manifest's folder, or {@code null}
  */
 public record SuiteManifest(String name, List<SequenceSpec> sequences, List<MethodSpec> methods, List<Long> seeds,
         List<Split> evaluatedSplits, SettingValues metrics, FailureDefinition failure, NormalisedScore score,
-        Budget budget) {
+        Budget budget, String resources) {
+
+    /** A manifest without a resources table. */
+    public SuiteManifest(String name, List<SequenceSpec> sequences, List<MethodSpec> methods, List<Long> seeds,
+            List<Split> evaluatedSplits, SettingValues metrics, FailureDefinition failure, NormalisedScore score,
+            Budget budget) {
+        this(name, sequences, methods, seeds, evaluatedSplits, metrics, failure, score, budget, null);
+    }
 
     /** Name of the manifest format. */
     public static final String FORMAT = "trajeval.suite-manifest";

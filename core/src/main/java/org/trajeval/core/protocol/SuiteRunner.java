@@ -202,14 +202,27 @@ public final class SuiteRunner {
                 throw new IllegalStateException(e.getCause());
             }
         }
-        List<RunEntry> runs = new ArrayList<>();
+        List<RunEntry> scored = new ArrayList<>();
         for (Outcome o : outcomes) {
-            runs.add(o.entry());
+            scored.add(o.entry());
             if (o.sha256() != null) {
                 digests.put(o.entry().estimate(), o.sha256());
                 roles.put(o.entry().estimate(), "estimate");
             }
         }
+        ResourcesTable table = ResourcesTable.empty();
+        if (m.resources() != null) {
+            Path file = inside(base, m.resources(), source, "resources");
+            table = ResourcesTable.read(file, new java.util.HashSet<>(m.methods().stream().map(MethodSpec::name)
+                    .toList()), new java.util.HashSet<>(m.sequences().stream().map(SequenceSpec::id).toList()));
+            digests.put(m.resources(), sha256(file));
+            roles.put(m.resources(), "resources");
+        }
+        Map<String, Double> durations = new LinkedHashMap<>();
+        references.forEach((id, r) -> durations.put(id, r.indexTimestamps() ? null
+                : r.trajectory().t(r.trajectory().size() - 1) - r.trajectory().t(0)));
+        BudgetCheck.Applied budgets = BudgetCheck.apply(m, table, scored, durations);
+        List<RunEntry> runs = budgets.runs();
         List<SuiteReport.InputDigest> inputs = new ArrayList<>();
         digests.forEach((p, h) -> inputs.add(new SuiteReport.InputDigest(roles.get(p), p, h)));
 
@@ -255,13 +268,22 @@ public final class SuiteRunner {
         for (SeedSetCheck.Deviation d : seeds.deviations()) {
             warnings.add("SEEDS: " + d.describe() + "; statistics use only the common seeds " + seeds.common());
         }
+        String simOnly = DomainGap.simOnlyWarning(evaluated);
+        if (simOnly != null) {
+            warnings.add(simOnly);
+        }
+        warnings.addAll(FactorSweeps.oneFactorAtATimeWarnings(evaluated));
+        warnings.addAll(budgets.warnings());
         SuiteReport report = new SuiteReport(SuiteReport.SCHEMA, SuiteReport.SCHEMA_VERSION, Version.TOOL,
                 protocol(m, manifestFile, seeds, settings, references.values().stream().allMatch(r ->
                         r.trajectory() instanceof org.trajeval.core.traj.PlanarTrajectory) ? DataKind.PLANAR
                         : DataKind.SPATIAL), new SuiteReport.Hygiene(leaks.stream().map(l ->
                         new SuiteReport.Leak(l.unit().name().toLowerCase(Locale.ROOT), l.id(), leakMembers(l)))
                         .toList(), !leaks.isEmpty(), warnings),
-                inputs, summaries, ranking.comparisons(), ranking.rankings(), runs);
+                inputs, summaries, ranking.comparisons(), ranking.rankings(),
+                DomainGap.compute(evaluated, runsByMethod, compared, stats),
+                FactorSweeps.compute(evaluated, runsByMethod, compared, settings.level(), m.failure().breakdownRate()),
+                budgets.report(), Slices.compute(evaluated, runsByMethod, keys, settings.level()), runs);
 
         List<SequencePlot> plots = new ArrayList<>();
         for (SequenceSpec s : evaluated) {
@@ -468,7 +490,9 @@ public final class SuiteRunner {
                 lower(o.pairSelection()), o.drift() == null ? null : o.drift().segmentLengthsM(),
                 o.drift() == null ? null : o.drift().stepFrames());
         List<SuiteReport.SequenceEntry> seqs = m.sequences().stream().map(s -> new SuiteReport.SequenceEntry(s.id(),
-                s.session(), s.split().key(), s.reference(), s.tags())).toList();
+                s.session(), s.split().key(), s.reference(), s.tags(), s.about().domain(), s.about().simulator(),
+                s.about().scenario(), s.about().factors(), s.about().environment(), s.about().modality(),
+                s.about().groundTruth())).toList();
         SuiteReport.Seeds sd = new SuiteReport.Seeds(seeds.declared(), seeds.common(), seeds.deviations().stream()
                 .map(d -> new SuiteReport.SeedDeviation(d.method(), d.missing(), d.extra())).toList());
         Budget b = m.budget();

@@ -53,6 +53,14 @@ public record EvaluationReport(
                 coverage, warnings, timeBase, extra);
     }
 
+    /** @return a copy with one more warning at the end */
+    public EvaluationReport withWarning(Warning w) {
+        java.util.List<Warning> more = new java.util.ArrayList<>(warnings);
+        more.add(w);
+        return new EvaluationReport(schema, schemaVersion, version, convention, inputs, association, alignment, ate,
+                rpe, drift, coverage, more, timeBase, extra);
+    }
+
     /** @throws NullPointerException never; null warnings (older reports) read as none */
     public EvaluationReport {
         warnings = warnings == null ? java.util.List.of() : java.util.List.copyOf(warnings);

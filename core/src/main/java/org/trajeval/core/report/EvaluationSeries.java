@@ -1,7 +1,9 @@
 package org.trajeval.core.report;
 
+import java.util.Arrays;
 import java.util.Objects;
 import org.trajeval.core.eval.Evaluation;
+import org.trajeval.core.metric.SubTrajectoryErrors;
 
 /**
  * The per-pose and per-pair series behind one evaluation, for plots and for saving beside the
@@ -14,16 +16,23 @@ import org.trajeval.core.eval.Evaluation;
  * @param timeUnit "s" or "frame"
  * @param poses one row per associated pose
  * @param pairs one row per RPE pair
+ * @param segments one row per sub-trajectory (relative error per length), possibly none
  */
-public record EvaluationSeries(String timeUnit, Poses poses, Pairs pairs) {
+public record EvaluationSeries(String timeUnit, Poses poses, Pairs pairs, Segments segments) {
 
     /** @throws IllegalArgumentException on an unknown time unit */
     public EvaluationSeries {
         Objects.requireNonNull(poses, "poses");
         Objects.requireNonNull(pairs, "pairs");
+        Objects.requireNonNull(segments, "segments");
         if (!"s".equals(timeUnit) && !"frame".equals(timeUnit)) {
             throw new IllegalArgumentException("time unit must be s or frame, found \"" + timeUnit + "\"");
         }
+    }
+
+    /** The series without sub-trajectory errors (a folder saved before they were). */
+    public EvaluationSeries(String timeUnit, Poses poses, Pairs pairs) {
+        this(timeUnit, poses, pairs, Segments.NONE);
     }
 
     /**
@@ -79,12 +88,62 @@ public record EvaluationSeries(String timeUnit, Poses poses, Pairs pairs) {
     }
 
     /**
+     * Per sub-trajectory ({@link SubTrajectoryErrors}), length by length, in the order of the starts.
+     *
+     * @param lengthM sub-trajectory length L (m)
+     * @param t time of the start pose from the first pose (s, or frames)
+     * @param transPct |trans(E)| / L x 100 (%)
+     * @param rotDegPerM angle(E) / L (deg/m)
+     */
+    public record Segments(double[] lengthM, double[] t, double[] transPct, double[] rotDegPerM) {
+        /** No segments. */
+        public static final Segments NONE = new Segments(new double[0], new double[0], new double[0], new double[0]);
+
+        /** @throws IllegalArgumentException when the columns differ in length */
+        public Segments {
+            int n = lengthM.length;
+            if (t.length != n || transPct.length != n || rotDegPerM.length != n) {
+                throw new IllegalArgumentException("segment columns must have " + n + " rows");
+            }
+        }
+
+        /** @return number of segments */
+        public int size() {
+            return t.length;
+        }
+
+        /** @return the distinct lengths (m), in order of appearance */
+        public double[] lengths() {
+            return Arrays.stream(lengthM).distinct().toArray();
+        }
+
+        /** @return the values of one column for one length, e.g. {@code at(transPct(), 100.0)} */
+        public double[] at(double[] column, double length) {
+            int k = 0;
+            double[] out = new double[lengthM.length];
+            for (int i = 0; i < lengthM.length; i++) {
+                if (lengthM[i] == length) {
+                    out[k++] = column[i];
+                }
+            }
+            return Arrays.copyOf(out, k);
+        }
+    }
+
+    /** The series of an evaluation, with sub-trajectory errors at 10 ... 50 % of the path. */
+    public static EvaluationSeries of(Evaluation e, boolean frames) {
+        return of(e, frames, null);
+    }
+
+    /**
      * The series of an evaluation.
      *
      * @param e the evaluation ({@code Evaluator.run})
      * @param frames true when the stamps are pose indices (KITTI without a times file)
+     * @param subTrajectoryLengthsM lengths of the sub-trajectory errors (m), or null for 10 ... 50 %
+     *     of the reference path
      */
-    public static EvaluationSeries of(Evaluation e, boolean frames) {
+    public static EvaluationSeries of(Evaluation e, boolean frames, double[] subTrajectoryLengthsM) {
         double[] stamps = e.associated().timestamps();
         int n = stamps.length;
         double t0 = n == 0 ? 0.0 : stamps[0];
@@ -106,6 +165,25 @@ public record EvaluationSeries(String timeUnit, Poses poses, Pairs pairs) {
             ph[k] = t[e.rpe().second()[k]] - pt[k];
         }
         return new EvaluationSeries(frames ? "frame" : "s", poses,
-                new Pairs(pt, ph, e.rpe().transErrorsM(), e.rpe().rotErrorsRad()));
+                new Pairs(pt, ph, e.rpe().transErrorsM(), e.rpe().rotErrorsRad()),
+                segments(SubTrajectoryErrors.compute(ref, est, subTrajectoryLengthsM), t));
+    }
+
+    private static Segments segments(SubTrajectoryErrors s, double[] t) {
+        int n = s.perLength().stream().mapToInt(SubTrajectoryErrors.AtLength::size).sum();
+        double[] len = new double[n];
+        double[] st = new double[n];
+        double[] tr = new double[n];
+        double[] rot = new double[n];
+        int k = 0;
+        for (SubTrajectoryErrors.AtLength a : s.perLength()) {
+            for (int i = 0; i < a.size(); i++, k++) {
+                len[k] = a.lengthM();
+                st[k] = t[a.first()[i]];
+                tr[k] = a.transPct()[i];
+                rot[k] = a.rotDegPerM()[i];
+            }
+        }
+        return new Segments(len, st, tr, rot);
     }
 }

@@ -78,6 +78,20 @@ public final class ReportJson {
 
     /** As {@link #writeAtomically(Path, String)}, for bytes (images, gzip files). */
     public static void writeAtomically(Path target, byte[] bytes) {
+        writeAtomically(target, out -> out.write(bytes));
+    }
+
+    /** What a streamed file holds: written to the stream, which the caller must not close. */
+    @FunctionalInterface
+    public interface Content {
+        void writeTo(java.io.OutputStream out) throws IOException;
+    }
+
+    /**
+     * As {@link #writeAtomically(Path, String)}, streaming the content into the temporary file
+     * (large series are never held in memory whole).
+     */
+    public static void writeAtomically(Path target, Content content) {
         Path dir = target.toAbsolutePath().getParent();
         try {
             Files.createDirectories(dir);
@@ -85,7 +99,9 @@ public final class ReportJson {
             try {
                 try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE,
                         StandardOpenOption.TRUNCATE_EXISTING)) {
-                    ch.write(java.nio.ByteBuffer.wrap(bytes));
+                    java.io.OutputStream out = java.nio.channels.Channels.newOutputStream(ch);
+                    content.writeTo(out);
+                    out.flush();
                     ch.force(true);
                 }
                 try {

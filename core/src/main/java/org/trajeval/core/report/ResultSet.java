@@ -14,15 +14,23 @@ import java.util.Objects;
  * @param description what the source says it is (evo's title, trajeval's alignment and RPE horizon)
  * @param timeUnit unit of the errors' times: "s", "frame", or null when no times were saved
  * @param errors one entry per error kind present
+ * @param segments relative errors per sub-trajectory length (none for evo archives and summaries)
  */
 public record ResultSet(String name, String source, String origin, String description, String timeUnit,
-        List<Errors> errors) {
+        List<Errors> errors, EvaluationSeries.Segments segments) {
 
     /** @throws NullPointerException on a missing component */
     public ResultSet {
         Objects.requireNonNull(name, "name");
         Objects.requireNonNull(source, "source");
+        Objects.requireNonNull(segments, "segments");
         errors = List.copyOf(errors);
+    }
+
+    /** A result without sub-trajectory errors. */
+    public ResultSet(String name, String source, String origin, String description, String timeUnit,
+            List<Errors> errors) {
+        this(name, source, origin, description, timeUnit, errors, EvaluationSeries.Segments.NONE);
     }
 
     /** Error kinds, with their key and label (SI units). */

@@ -69,7 +69,8 @@ public final class SavedResults {
                 q == null ? null : q.rpeRotRad()));
         String d = "alignment " + r.alignment().model() + ", RPE delta " + r.rpe().delta() + " " + r.rpe().unit()
                 + " " + r.rpe().pairSelection();
-        return new ResultSet(name, source, "trajeval", d, s.series() == null ? null : s.series().timeUnit(), e);
+        return new ResultSet(name, source, "trajeval", d, s.series() == null ? null : s.series().timeUnit(), e,
+                s.series() == null ? EvaluationSeries.Segments.NONE : s.series().segments());
     }
 
     private static String stem(Path p) {

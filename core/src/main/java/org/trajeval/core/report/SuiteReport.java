@@ -24,10 +24,14 @@ import java.util.Map;
  * @param comparisons paired comparisons of every pair of methods and every compared metric
  * @param rankings with three or more methods, per compared metric: Friedman test, average ranks and the
  *     rank diagram's groups (empty with fewer methods)
+ * @param domainGap simulation beside reality (null unless the suite has both sim and real sequences)
+ * @param factorSweeps one stress sweep per declared factor (empty without factors)
+ * @param budgets the runs' measured resources against the budget
+ * @param slices the methods' tables per domain, environment, modality and ground-truth type
  * @param runs every (method, sequence, seed) run, sorted by method (manifest order), sequence, seed
  */
 @JsonPropertyOrder({"schema", "schema_version", "version", "protocol", "hygiene", "inputs", "methods", "comparisons",
-    "rankings", "runs"})
+    "rankings", "domain_gap", "factor_sweeps", "budgets", "slices", "runs"})
 @JsonInclude(JsonInclude.Include.ALWAYS)
 public record SuiteReport(
         @JsonProperty("schema") String schema,
@@ -39,7 +43,19 @@ public record SuiteReport(
         @JsonProperty("methods") List<MethodSummary> methods,
         @JsonProperty("comparisons") List<Comparison> comparisons,
         @JsonProperty("rankings") List<Ranking> rankings,
+        @JsonProperty("domain_gap") DomainGapReport domainGap,
+        @JsonProperty("factor_sweeps") List<FactorSweep> factorSweeps,
+        @JsonProperty("budgets") BudgetReport budgets,
+        @JsonProperty("slices") List<SliceReport> slices,
         @JsonProperty("runs") List<RunEntry> runs) {
+
+    /** A report without the simulation, sweep, budget and slice sections. */
+    public SuiteReport(String schema, int schemaVersion, String version, Protocol protocol, Hygiene hygiene,
+            List<InputDigest> inputs, List<MethodSummary> methods, List<Comparison> comparisons,
+            List<Ranking> rankings, List<RunEntry> runs) {
+        this(schema, schemaVersion, version, protocol, hygiene, inputs, methods, comparisons, rankings, null,
+                List.of(), null, List.of(), runs);
+    }
 
     /** Name of the report schema. */
     public static final String SCHEMA = "trajeval.suite-report";
@@ -76,11 +92,22 @@ public record SuiteReport(
      * @param split train, val or test
      * @param reference reference file, relative to the manifest
      * @param tags environment tags
+     * @param domain sim or real, or null
+     * @param simulator the simulator, or null
+     * @param scenario the scenario id, or null
+     * @param factors controlled factor levels by name (may be empty)
+     * @param environment environment type, or null
+     * @param modality sensing modality (words joined by '+'), or null
+     * @param groundTruth ground-truth source, or null
      */
-    @JsonPropertyOrder({"id", "session", "split", "reference", "tags"})
+    @JsonPropertyOrder({"id", "session", "split", "reference", "tags", "domain", "simulator", "scenario", "factors",
+        "environment", "modality", "ground_truth"})
     public record SequenceEntry(@JsonProperty("id") String id, @JsonProperty("session") String session,
             @JsonProperty("split") String split, @JsonProperty("reference") String reference,
-            @JsonProperty("tags") List<String> tags) {
+            @JsonProperty("tags") List<String> tags, @JsonProperty("domain") String domain,
+            @JsonProperty("simulator") String simulator, @JsonProperty("scenario") String scenario,
+            @JsonProperty("factors") Map<String, Double> factors, @JsonProperty("environment") String environment,
+            @JsonProperty("modality") String modality, @JsonProperty("ground_truth") String groundTruth) {
     }
 
     /**

@@ -86,8 +86,17 @@ public final class SuiteReportFiles {
         List<String> header = new ArrayList<>(List.of("method", "sequence", "seed", "split", "status",
                 "failure_reason", "failure_detail", "coverage"));
         header.addAll(keys);
-        header.addAll(List.of("score", "estimate"));
+        header.addAll(List.of("score", "estimate", "domain", "scenario", "simulator", "environment", "modality",
+                "ground_truth", "factors", "budget_status", "wall_time_s", "peak_memory_mib", "real_time_factor",
+                "budget_detail"));
         row(sb, header);
+        java.util.Map<String, SuiteReport.SequenceEntry> seqs = new java.util.HashMap<>();
+        report.protocol().sequences().forEach(s -> seqs.put(s.id(), s));
+        java.util.Map<String, BudgetReport.RunBudget> budgets = new java.util.HashMap<>();
+        if (report.budgets() != null) {
+            report.budgets().runs().forEach(b -> budgets.put(b.method() + "\u0000" + b.sequence() + "\u0000" + b.seed(),
+                    b));
+        }
         for (RunEntry r : report.runs()) {
             List<String> f = new ArrayList<>(List.of(r.method(), r.sequence(), Long.toString(r.seed()), r.split(),
                     r.status(), r.failure() == null ? "" : r.failure().reason(),
@@ -97,6 +106,15 @@ public final class SuiteReportFiles {
             }
             f.add(num(r.score()));
             f.add(r.estimate());
+            SuiteReport.SequenceEntry s = seqs.get(r.sequence());
+            boolean known = s != null;
+            f.addAll(java.util.Arrays.asList(known ? s.domain() : null, known ? s.scenario() : null,
+                    known ? s.simulator() : null, known ? s.environment() : null, known ? s.modality() : null,
+                    known ? s.groundTruth() : null, known ? factors(s.factors()) : null));
+            BudgetReport.RunBudget b = budgets.get(r.method() + "\u0000" + r.sequence() + "\u0000" + r.seed());
+            f.addAll(b == null ? java.util.Arrays.asList("unknown", "", "", "", "") : List.of(b.status(),
+                    num(b.wallTimeS()), num(b.peakMemoryMib()), num(b.realTimeFactor()),
+                    String.join("; ", b.violations())));
             row(sb, f);
         }
         return sb.toString();
@@ -176,26 +194,25 @@ public final class SuiteReportFiles {
         return sb.toString();
     }
 
+    /** @return factor levels as {@code name=level;name=level}, "" without factors */
+    private static String factors(java.util.Map<String, Double> f) {
+        if (f == null) {
+            return "";
+        }
+        List<String> out = new ArrayList<>();
+        new java.util.TreeMap<>(f).forEach((k, v) -> out.add(k + "=" + v));
+        return String.join(";", out);
+    }
+
     private static List<String> bounds(Bounds b) {
         return b == null ? List.of("", "") : List.of(num(b.lower()), num(b.upper()));
     }
 
     private static String num(Double v) {
-        return v == null || !Double.isFinite(v) ? "" : Double.toString(v);
+        return CsvText.number(v);
     }
 
     private static void row(StringBuilder sb, List<String> fields) {
-        for (int i = 0; i < fields.size(); i++) {
-            if (i > 0) {
-                sb.append(',');
-            }
-            String f = fields.get(i) == null ? "" : fields.get(i);
-            if (f.indexOf(',') >= 0 || f.indexOf('"') >= 0 || f.indexOf('\n') >= 0) {
-                sb.append('"').append(f.replace("\"", "\"\"")).append('"');
-            } else {
-                sb.append(f);
-            }
-        }
-        sb.append('\n');
+        CsvText.row(sb, fields);
     }
 }

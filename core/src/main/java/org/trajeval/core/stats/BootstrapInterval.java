@@ -48,6 +48,24 @@ public final class BootstrapInterval {
         return new Interval(SampleSummary.of(values).mean(), lo, hi, level);
     }
 
+    /**
+     * The percentile interval of bootstrap replicates: the alpha/2 and 1-alpha/2 type-7 quantiles
+     * of the finite replicates (resamples whose statistic is undefined, NaN, are left out).
+     *
+     * @param estimate the statistic on the original sample
+     * @param replicates the statistic on each resample
+     * @param level confidence level 1 - alpha
+     * @return the interval, or null when no replicate is finite
+     */
+    public static Interval percentile(double estimate, double[] replicates, double level) {
+        double[] finite = Arrays.stream(replicates).filter(Double::isFinite).sorted().toArray();
+        if (finite.length == 0) {
+            return null;
+        }
+        double alpha = 1.0 - level;
+        return new Interval(estimate, quantile(finite, alpha / 2.0), quantile(finite, 1.0 - alpha / 2.0), level);
+    }
+
     /** Type-7 quantile (linear interpolation between order statistics) of sorted values. */
     static double quantile(double[] sorted, double p) {
         double h = (sorted.length - 1) * p;

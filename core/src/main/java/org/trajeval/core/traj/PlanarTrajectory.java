@@ -103,17 +103,23 @@ public final class PlanarTrajectory implements Trajectory {
     }
 
     @Override
+    public void rotation(int i, double[] out, int o) {
+        Rotations.aboutZ(yaw[i], out, o);
+    }
+
+    @Override
     public SpatialTrajectory toSpatial() {
         int n = size();
         double[] r = new double[9 * n];
-        double[] q = new double[4 * n];
+        double[] qw = new double[n];
+        double[] qz = new double[n];
         for (int i = 0; i < n; i++) {
             Rotations.aboutZ(yaw[i], r, 9 * i);
-            q[4 * i] = Math.cos(0.5 * yaw[i]);
-            q[4 * i + 3] = Math.sin(0.5 * yaw[i]);
+            qw[i] = Math.cos(0.5 * yaw[i]);
+            qz[i] = Math.sin(0.5 * yaw[i]);
         }
         return SpatialTrajectory.ofPoses(Arrays.copyOf(t, n), PoseSequence.of(Arrays.copyOf(x, n),
-                Arrays.copyOf(y, n), new double[n], r), q);
+                Arrays.copyOf(y, n), new double[n], r), new double[][] {qw, new double[n], new double[n], qz});
     }
 
     @Override

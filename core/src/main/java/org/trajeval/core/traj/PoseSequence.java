@@ -9,7 +9,7 @@ import org.trajeval.core.geom.Rotations;
  * positions x, y, z (m) and rotation matrices (9 doubles per pose, row-major; see
  * {@link Rotations} for the conventions). Immutable: arrays passed to {@link #of} are owned.
  */
-public final class PoseSequence {
+public final class PoseSequence implements PositionColumns {
     private final double[] x;
     private final double[] y;
     private final double[] z;
@@ -41,16 +41,19 @@ public final class PoseSequence {
     }
 
     /** @return x of pose i (m) */
+    @Override
     public double x(int i) {
         return x[i];
     }
 
     /** @return y of pose i (m) */
+    @Override
     public double y(int i) {
         return y[i];
     }
 
     /** @return z of pose i (m) */
+    @Override
     public double z(int i) {
         return z[i];
     }
@@ -68,6 +71,11 @@ public final class PoseSequence {
     /** @return a copy of all rotation matrices (9 per pose, row-major) */
     public double[] rotations() {
         return r.clone();
+    }
+
+    /** @return x, y, z themselves (package use: trajectories sharing the immutable columns) */
+    double[][] positionColumns() {
+        return new double[][] {x, y, z};
     }
 
     /** @return copies of x, y, z */

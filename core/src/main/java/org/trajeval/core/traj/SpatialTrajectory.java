@@ -1,5 +1,6 @@
 package org.trajeval.core.traj;
 
+import java.util.Arrays;
 import org.trajeval.core.geom.Rotations;
 
 /**
@@ -10,16 +11,35 @@ import org.trajeval.core.geom.Rotations;
  * body x axis to world +y. See {@link Rotations} for the storage layout.
  *
  * <p>Immutable: the arrays handed to the factories are owned by the trajectory afterwards.
+ * Memory: built from quaternions, a pose takes 64 B (t, x, y, z and the quaternion's four
+ * columns, kept as handed over: no copy); the rotation matrices (72 B per pose) are derived on
+ * demand ({@link #rotation}) and materialised only when {@link #poses()} is asked for (the
+ * general path, plots), once.
  */
 public final class SpatialTrajectory implements Trajectory {
+    private final int n;
     private final double[] t;
-    private final PoseSequence poses;
-    private final double[] q;
+    private final double[] px;
+    private final double[] py;
+    private final double[] pz;
+    private final double[] qw;
+    private final double[] qx;
+    private final double[] qy;
+    private final double[] qz;
+    private volatile PoseSequence poses;
 
-    private SpatialTrajectory(double[] t, PoseSequence poses, double[] q) {
+    private SpatialTrajectory(int n, double[] t, double[] x, double[] y, double[] z, double[][] q,
+            PoseSequence poses) {
+        this.n = n;
         this.t = t;
+        this.px = x;
+        this.py = y;
+        this.pz = z;
+        this.qw = q == null ? null : q[0];
+        this.qx = q == null ? null : q[1];
+        this.qy = q == null ? null : q[2];
+        this.qz = q == null ? null : q[3];
         this.poses = poses;
-        this.q = q;
     }
 
     /**
@@ -33,25 +53,34 @@ public final class SpatialTrajectory implements Trajectory {
     public static SpatialTrajectory of(double[] t, double[] x, double[] y, double[] z,
             double[] qw, double[] qx, double[] qy, double[] qz) {
         TimestampCheck.requireSameLength(t.length, x, y, z, qw, qx, qy, qz);
-        TimestampCheck.requireNonDecreasing(t);
-        for (double[] c : new double[][] {x, y, z, qw, qx, qy, qz}) {
-            TimestampCheck.requireFinite("pose", c);
+        return ofFirst(t.length, t, x, y, z, qw, qx, qy, qz);
+    }
+
+    /**
+     * The first {@code n} values of the columns as a trajectory, without copying (readers hand
+     * over columns with a little spare capacity). Takes ownership of the arrays.
+     *
+     * @throws IllegalArgumentException when a column is shorter than n, on non-finite values, a
+     *     zero quaternion or decreasing timestamps
+     */
+    public static SpatialTrajectory ofFirst(int n, double[] t, double[] x, double[] y, double[] z,
+            double[] qw, double[] qx, double[] qy, double[] qz) {
+        for (double[] c : new double[][] {t, x, y, z, qw, qx, qy, qz}) {
+            if (n < 0 || c.length < n) {
+                throw new IllegalArgumentException("every column needs at least " + n + " values");
+            }
         }
-        int n = t.length;
-        double[] r = new double[9 * n];
-        double[] q = new double[4 * n];
+        TimestampCheck.requireNonDecreasing(t, n);
+        for (double[] c : new double[][] {x, y, z, qw, qx, qy, qz}) {
+            TimestampCheck.requireFinite("pose", c, n);
+        }
         for (int i = 0; i < n; i++) {
             double norm = Math.sqrt(qw[i] * qw[i] + qx[i] * qx[i] + qy[i] * qy[i] + qz[i] * qz[i]);
             if (!(norm > 0.0)) {
                 throw new IllegalArgumentException("quaternion " + i + " is zero");
             }
-            Rotations.fromQuaternion(qw[i], qx[i], qy[i], qz[i], r, 9 * i);
-            q[4 * i] = qw[i];
-            q[4 * i + 1] = qx[i];
-            q[4 * i + 2] = qy[i];
-            q[4 * i + 3] = qz[i];
         }
-        return new SpatialTrajectory(t, PoseSequence.of(x, y, z, r), q);
+        return new SpatialTrajectory(n, t, x, y, z, new double[][] {qw, qx, qy, qz}, null);
     }
 
     /**
@@ -65,17 +94,18 @@ public final class SpatialTrajectory implements Trajectory {
         TimestampCheck.requireFinite("y", y);
         TimestampCheck.requireFinite("z", z);
         TimestampCheck.requireFinite("rotation", r);
-        return new SpatialTrajectory(t, PoseSequence.of(x, y, z, r), null);
+        return new SpatialTrajectory(t.length, t, x, y, z, null, PoseSequence.of(x, y, z, r));
     }
 
-    /** From timestamps and poses (package use: interpolation, transforms). */
-    static SpatialTrajectory ofPoses(double[] t, PoseSequence poses, double[] q) {
-        return new SpatialTrajectory(t, poses, q);
+    /** From timestamps, poses and their quaternion columns w, x, y, z (package use: planar lifted to SE(3)). */
+    static SpatialTrajectory ofPoses(double[] t, PoseSequence poses, double[][] q) {
+        double[][] p = poses.positionColumns();
+        return new SpatialTrajectory(t.length, t, p[0], p[1], p[2], q, poses);
     }
 
     @Override
     public int size() {
-        return t.length;
+        return n;
     }
 
     @Override
@@ -85,22 +115,54 @@ public final class SpatialTrajectory implements Trajectory {
 
     @Override
     public double x(int i) {
-        return poses.x(i);
+        return px[i];
     }
 
     @Override
     public double y(int i) {
-        return poses.y(i);
+        return py[i];
     }
 
     @Override
     public double z(int i) {
-        return poses.z(i);
+        return pz[i];
     }
 
-    /** @return the poses without their timestamps */
+    /**
+     * The rotation matrix of pose i: as given (matrices), or {@link Rotations#fromQuaternion} of
+     * the quaternion as read, bit for bit the matrix {@link #poses()} holds.
+     */
+    @Override
+    public void rotation(int i, double[] out, int o) {
+        PoseSequence p = poses;
+        if (p != null) {
+            p.rotation(i, out, o);
+        } else {
+            Rotations.fromQuaternion(qw[i], qx[i], qy[i], qz[i], out, o);
+        }
+    }
+
+    /** @return the poses without their timestamps (rotation matrices materialised on first call) */
     public PoseSequence poses() {
-        return poses;
+        PoseSequence p = poses;
+        if (p == null) {
+            synchronized (this) {
+                p = poses;
+                if (p == null) {
+                    double[] r = new double[9 * n];
+                    for (int i = 0; i < n; i++) {
+                        rotation(i, r, 9 * i);
+                    }
+                    p = PoseSequence.of(exact(px), exact(py), exact(pz), r);
+                    poses = p;
+                }
+            }
+        }
+        return p;
+    }
+
+    private double[] exact(double[] column) {
+        return column.length == n ? column : Arrays.copyOf(column, n);
     }
 
     /**
@@ -110,8 +172,11 @@ public final class SpatialTrajectory implements Trajectory {
      * @param out receives w, x, y, z
      */
     public void quaternion(int i, double[] out) {
-        if (q != null) {
-            System.arraycopy(q, 4 * i, out, 0, 4);
+        if (qw != null) {
+            out[0] = qw[i];
+            out[1] = qx[i];
+            out[2] = qy[i];
+            out[3] = qz[i];
         } else {
             double[] r = new double[9];
             poses.rotation(i, r, 0);
@@ -121,28 +186,25 @@ public final class SpatialTrajectory implements Trajectory {
 
     /** @return quaternion scalar part w of pose i (as read, or derived from the matrix) */
     public double qw(int i) {
-        return quaternionPart(i, 0);
+        return qw != null ? qw[i] : quaternionPart(i, 0);
     }
 
     /** @return quaternion x part of pose i */
     public double qx(int i) {
-        return quaternionPart(i, 1);
+        return qx != null ? qx[i] : quaternionPart(i, 1);
     }
 
     /** @return quaternion y part of pose i */
     public double qy(int i) {
-        return quaternionPart(i, 2);
+        return qy != null ? qy[i] : quaternionPart(i, 2);
     }
 
     /** @return quaternion z part of pose i */
     public double qz(int i) {
-        return quaternionPart(i, 3);
+        return qz != null ? qz[i] : quaternionPart(i, 3);
     }
 
     private double quaternionPart(int i, int k) {
-        if (q != null) {
-            return q[4 * i + k];
-        }
         double[] out = new double[4];
         quaternion(i, out);
         return out[k];
@@ -150,7 +212,7 @@ public final class SpatialTrajectory implements Trajectory {
 
     @Override
     public double[] timestamps() {
-        return t.clone();
+        return Arrays.copyOf(t, n);
     }
 
     @Override
@@ -160,23 +222,31 @@ public final class SpatialTrajectory implements Trajectory {
 
     @Override
     public PlanarTrajectory toPlanar() {
-        int n = size();
         double[] x = new double[n];
         double[] y = new double[n];
         double[] yaw = new double[n];
         double[] r = new double[9];
         for (int i = 0; i < n; i++) {
-            x[i] = poses.x(i);
-            y[i] = poses.y(i);
-            poses.rotation(i, r, 0);
+            x[i] = px[i];
+            y[i] = py[i];
+            rotation(i, r, 0);
             yaw[i] = Rotations.yaw(r, 0);
         }
-        return PlanarTrajectory.of(t.clone(), x, y, yaw);
+        return PlanarTrajectory.of(Arrays.copyOf(t, n), x, y, yaw);
     }
 
     @Override
     public SpatialTrajectory slice(int from, int to) {
-        double[] nq = q == null ? null : java.util.Arrays.copyOfRange(q, 4 * from, 4 * to);
-        return new SpatialTrajectory(java.util.Arrays.copyOfRange(t, from, to), poses.slice(from, to), nq);
+        if (to > n) {
+            throw new IndexOutOfBoundsException("slice [" + from + ", " + to + ") of " + n + " poses");
+        }
+        double[] nt = Arrays.copyOfRange(t, from, to);
+        if (qw == null) {
+            return ofPoses(nt, poses.slice(from, to), null);
+        }
+        return new SpatialTrajectory(to - from, nt, Arrays.copyOfRange(px, from, to), Arrays.copyOfRange(py, from, to),
+                Arrays.copyOfRange(pz, from, to), new double[][] {Arrays.copyOfRange(qw, from, to),
+                    Arrays.copyOfRange(qx, from, to), Arrays.copyOfRange(qy, from, to), Arrays.copyOfRange(qz, from, to)},
+                null);
     }
 }

@@ -6,7 +6,7 @@ package org.trajeval.core.traj;
  * in primitive arrays. Either planar SE(2) ({@link PlanarTrajectory}: t, x, y, yaw) or full
  * SE(3) ({@link SpatialTrajectory}: t, position, unit quaternion).
  */
-public sealed interface Trajectory permits PlanarTrajectory, SpatialTrajectory {
+public sealed interface Trajectory extends PositionColumns permits PlanarTrajectory, SpatialTrajectory {
 
     /** @return number of poses */
     int size();
@@ -22,6 +22,13 @@ public sealed interface Trajectory permits PlanarTrajectory, SpatialTrajectory {
 
     /** @return z of pose {@code i} (m); 0 for a planar trajectory */
     double z(int i);
+
+    /**
+     * Writes the rotation matrix of pose {@code i} (row-major, body to world) into
+     * {@code out[o..o+9)}: for a planar pose the rotation about +z by its yaw, exactly the matrix
+     * {@link #toSpatial()} holds.
+     */
+    void rotation(int i, double[] out, int o);
 
     /** @return a copy of the timestamps (s) */
     double[] timestamps();

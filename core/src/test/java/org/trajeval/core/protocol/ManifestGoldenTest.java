@@ -60,6 +60,35 @@ class ManifestGoldenTest {
     }
 
     @Test
+    void simRealDescriptionFieldsAndBudgetPolicyAreRead() {
+        SuiteManifest m = new ManifestParser().read(DIR.resolve("good/sim_real.yaml"));
+        org.trajeval.core.options.RunMetadata sim = m.sequence("corridor_sim").about();
+        assertEquals("sim", sim.domain());
+        assertEquals("gazebo", sim.simulator());
+        assertEquals("corridor", sim.scenario());
+        // factors sorted by name; the integer 1 is the level 1.0
+        assertEquals(java.util.Map.of("friction", 1.0, "obstacle_density", 0.4), sim.factors());
+        assertEquals("friction=1.0;obstacle_density=0.4", sim.factorsText());
+        assertEquals("stereo+imu", sim.modality());
+        assertEquals("simulator", sim.groundTruth());
+        assertTrue(m.sequence("corridor_real").about().real());
+        assertEquals("mocap", m.sequence("corridor_real").about().groundTruth());
+        assertEquals(org.trajeval.core.options.RunMetadata.NONE, m.sequence("plain").about());
+        assertEquals(FailureDefinition.BudgetPolicy.WARN, m.failure().budget());
+        assertEquals(0.25, m.failure().breakdownRate(), 0.0);
+        assertEquals("measured/resources.csv", m.resources());
+    }
+
+    @Test
+    void withoutTheNewFieldsTheDefaultsHold() {
+        SuiteManifest m = new ManifestParser().read(DIR.resolve("good/full.yaml"));
+        assertEquals(FailureDefinition.BudgetPolicy.FAIL, m.failure().budget());
+        assertEquals(0.5, m.failure().breakdownRate(), 0.0);
+        assertNull(m.resources());
+        assertNull(m.sequence("a1").about().domain());
+    }
+
+    @Test
     void goodManifestIsReadCompletely() {
         SuiteManifest m = new ManifestParser().read(DIR.resolve("good/full.yaml"));
         assertEquals("golden", m.name());

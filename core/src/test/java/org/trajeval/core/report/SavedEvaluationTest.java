@@ -70,6 +70,37 @@ class SavedEvaluationTest {
         assertArrayEquals(saved.series().poses().ateTransM(), back.series().poses().ateTransM());
         assertArrayEquals(saved.series().pairs().rpeRotRad(), back.series().pairs().rpeRotRad());
         assertEquals(saved.report().ate().transM(), back.report().ate().transM());
+        EvaluationSeries.Segments g = saved.series().segments();
+        assertTrue(g.size() > 0);
+        assertArrayEquals(g.lengthM(), back.series().segments().lengthM());
+        assertArrayEquals(g.t(), back.series().segments().t());
+        assertArrayEquals(g.transPct(), back.series().segments().transPct());
+        assertArrayEquals(g.rotDegPerM(), back.series().segments().rotDegPerM());
+    }
+
+    @Test
+    void segmentsAreTheSubTrajectoryErrorsOfTheEvaluationAtTheirStartTimes() {
+        // the path runs 24.5 m along x (49 steps of 0.5 m); default lengths 10 ... 50 %: 2.45, 4.9, ... 12.25 m.
+        // The estimate is the reference shifted sideways (no alignment): every relative motion is the same,
+        // so every segment's error is 0 and a length of L m ends at the first pose beyond L.
+        EvaluationSeries s = EvaluationSeries.of(offsetPair(), false);
+        EvaluationSeries.Segments g = s.segments();
+        assertArrayEquals(new double[] {2.45, 4.9, 7.35, 9.8, 12.25}, g.lengths(), 1e-9);
+        // 2.45 m ends 5 poses on (2.5 m): starts 0..44, i.e. 45 segments, the first at t = 0 s, the last at 4.4 s
+        double[] t = g.at(g.t(), g.lengths()[0]);
+        assertEquals(45, t.length);
+        assertEquals(4.4, t[44], 1e-9);
+        for (double v : g.transPct()) {
+            assertEquals(0.0, v, 1e-9);
+        }
+    }
+
+    @Test
+    void aFolderSavedBeforeSegmentsReadsWithNone() throws Exception {
+        Evaluation e = offsetPair();
+        new SavedEvaluation(e.report(), EvaluationSeries.of(e, false)).write(dir);
+        Files.delete(dir.resolve(SavedEvaluation.SEGMENTS));
+        assertEquals(0, SavedEvaluation.read(dir).series().segments().size());
     }
 
     @Test

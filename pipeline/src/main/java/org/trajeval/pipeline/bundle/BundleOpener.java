@@ -26,18 +26,29 @@ public final class BundleOpener {
     public static final String PAIR_ESTIMATE = ".est.csv";
 
     private final BundleLimits limits;
+    private final SettingValues bagSettings;
 
-    /** @param limits size limits */
+    /** @param limits size limits; bare bags are refused (no topics configured) */
     public BundleOpener(BundleLimits limits) {
+        this(limits, SettingValues.DEFAULTS);
+    }
+
+    /**
+     * @param limits size limits
+     * @param bagSettings the settings bare bags are scored with (the configuration's {@code bags.metrics}:
+     *     {@code ref_topic} and {@code est_topic} at least, else bare bags are refused with the reason)
+     */
+    public BundleOpener(BundleLimits limits, SettingValues bagSettings) {
         this.limits = limits;
+        this.bagSettings = java.util.Objects.requireNonNull(bagSettings, "bagSettings");
     }
 
     /**
      * Opens a bundle.
      *
-     * @param kind folder, zip or pair
-     * @param payload the folder, the zip file, or the folder holding the pair's two files
-     * @param name the bundle's name (folder name, zip name without .zip, or the pair's NAME)
+     * @param kind folder, zip, pair or bare bag
+     * @param payload the folder, the zip file, the folder holding the pair's two files, or the bag file
+     * @param name the bundle's name (folder name, zip name without .zip, the pair's NAME, or the bag's file name)
      * @param scratch an empty folder a zip may be extracted into
      * @throws StageException with stage UNPACK or MANIFEST and the reason
      */
@@ -57,7 +68,49 @@ public final class BundleOpener {
                 yield openFolder(manifestFolder(scratch.toAbsolutePath().normalize(), name), name + ".zip");
             }
             case PAIR -> openPair(payload, name);
+            case BAG -> {
+                rejectLink(payload, name);
+                RunMetadata metadata;
+                try {
+                    metadata = RunMetadata.ofName(BareBag.stem(name));
+                } catch (InputException e) {
+                    InputException named = new InputException(name, 0, "name", e.problem(),
+                            "a bare bag's NAME is its run id: " + e.detail(), name, e);
+                    throw new StageException(RunFailure.of(Stage.UNPACK, named), named);
+                }
+                yield openBag(payload, metadata, name);
+            }
         };
+    }
+
+    /**
+     * Opens a bare bag (dropped alone, or named by a run event): one file that is both the reference
+     * and the estimate, read with the configured {@code bags.metrics} (its {@code ref_topic} and
+     * {@code est_topic}).
+     *
+     * @param bag the bag file
+     * @param metadata the run's identity (NAME of NAME.mcap, or the event's)
+     * @param source how to name the run in messages and the report
+     * @throws StageException MANIFEST when no topics are configured, UNPACK on a link, a missing or
+     *     oversized file
+     */
+    public RunJob openBag(Path bag, RunMetadata metadata, String source) {
+        if (!bagSettings.has(org.trajeval.core.options.Setting.REF_TOPIC)
+                || !bagSettings.has(org.trajeval.core.options.Setting.EST_TOPIC)) {
+            InputException e = new InputException(source, 0, "bags.metrics", InputProblem.INVALID_CONFIGURATION,
+                    "a bare bag is scored with the topics of the service configuration: set bags.metrics.ref_topic and "
+                            + "bags.metrics.est_topic (or send the bag in a bundle with its run.yaml)", null);
+            throw new StageException(RunFailure.of(Stage.MANIFEST, e), e);
+        }
+        try {
+            Path file = SafePaths.requireRegularFile(bag, source, "bag", source, limits.maxFileBytes());
+            RunJob job = new RunJob(metadata, file, file, bagSettings, source);
+            CoreRunScorer.readOptions(job, org.trajeval.core.options.FileRole.REFERENCE, limits.maxFileBytes());
+            CoreRunScorer.readOptions(job, org.trajeval.core.options.FileRole.ESTIMATE, limits.maxFileBytes());
+            return job;
+        } catch (InputException e) {
+            throw new StageException(RunFailure.of(Stage.UNPACK, e), e);
+        }
     }
 
     /**
@@ -109,7 +162,8 @@ public final class BundleOpener {
         try {
             Path ref = SafePaths.resolveFile(dir, manifest.reference(), manifestName, "reference", limits.maxFileBytes());
             Path est = SafePaths.resolveFile(dir, manifest.estimate(), manifestName, "estimate", limits.maxFileBytes());
-            RunJob job = new RunJob(manifest.metadata(), ref, est, manifest.settings(), source, dir);
+            RunJob job = new RunJob(manifest.metadata(), ref, est, manifest.settings(), source, dir,
+                    manifest.plot());
             CoreRunScorer.readOptions(job, org.trajeval.core.options.FileRole.REFERENCE, limits.maxFileBytes());
             CoreRunScorer.readOptions(job, org.trajeval.core.options.FileRole.ESTIMATE, limits.maxFileBytes());
             return job;

@@ -18,13 +18,14 @@ import org.trajeval.pipeline.RunJob;
  * @param reference SHA-256 of the reference file, lower-case hex
  * @param estimate SHA-256 of the estimate file, lower-case hex
  * @param content SHA-256 of "run id, robot, sequence, method, seed, settings, reference hash, estimate hash"
+ *     and, when the run has any, its fleet labels (site, software_version, tags)
  */
 public record ContentHash(String reference, String estimate, String content) {
 
     /** @return the fingerprints of a run (reads both files once, streaming) */
     public static ContentHash of(RunJob job) {
         String ref = ofFile(job.reference());
-        String est = ofFile(job.estimate());
+        String est = job.estimate().equals(job.reference()) ? ref : ofFile(job.estimate()); // a bag: read once
         var m = job.metadata();
         String settings = job.settings().canonical();
         if (job.folder() != null) {
@@ -38,6 +39,11 @@ public record ContentHash(String reference, String estimate, String content) {
         }
         String identity = String.join("\n", m.runId(), String.valueOf(m.robotId()), String.valueOf(m.sequence()),
                 String.valueOf(m.method()), String.valueOf(m.seed()), settings, ref, est);
+        if (!m.labels().isEmpty()) {
+            // the same run under another software version is another result; without labels the hash is
+            // what it was before labels existed, so ledgers of earlier versions still recognise their runs
+            identity += "\n" + m.labels().canonical();
+        }
         return new ContentHash(ref, est, hex(digest().digest(identity.getBytes(StandardCharsets.UTF_8))));
     }
 

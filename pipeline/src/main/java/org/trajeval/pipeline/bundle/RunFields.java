@@ -10,6 +10,7 @@ import org.trajeval.core.InputException;
 import org.trajeval.core.InputProblem;
 import org.trajeval.core.options.SettingValues;
 import org.trajeval.core.options.SettingsTree;
+import org.trajeval.pipeline.RunLabels;
 import org.trajeval.pipeline.RunMetadata;
 
 /**
@@ -52,14 +53,83 @@ public final class RunFields {
         return v.asText();
     }
 
-    /** @return the run identity: run_id (required), robot_id, sequence, method, seed (a whole number) */
+    /** The keys of {@link #metadata} and {@link #labels}, which every intake accepts. */
+    public static final Set<String> IDENTITY_KEYS = Set.of("run_id", "robot_id", "sequence", "method", "seed", "site",
+            "software_version", "tags");
+
+    /** @return {@link #IDENTITY_KEYS} and an intake's own keys: the keys it accepts */
+    public static Set<String> keysWith(String... own) {
+        Set<String> all = new java.util.HashSet<>(IDENTITY_KEYS);
+        all.addAll(Set.of(own));
+        return Set.copyOf(all);
+    }
+
+    /**
+     * @return the run identity: run_id (required), robot_id, sequence, method, seed (a whole number),
+     *     and the fleet labels site, software_version, tags
+     */
     public static RunMetadata metadata(JsonNode root, String source) {
         try {
             return new RunMetadata(text(root, "run_id", source, true), text(root, "robot_id", source, false),
-                    text(root, "sequence", source, false), text(root, "method", source, false), seed(root, source));
+                    text(root, "sequence", source, false), text(root, "method", source, false), seed(root, source),
+                    labels(root, source));
         } catch (InputException e) {
             throw new InputException(source, 0, e.column(), e.problem(), e.detail(), e.found(), e);
         }
+    }
+
+    /** @return site, software_version and tags (a mapping of single values) */
+    private static RunLabels labels(JsonNode root, String source) {
+        Map<String, String> tags = new java.util.LinkedHashMap<>();
+        JsonNode t = root.get("tags");
+        if (t != null && !t.isNull()) {
+            if (!t.isObject()) {
+                throw new InputException(source, 0, "tags", InputProblem.INVALID_CONFIGURATION,
+                        "tags must be a mapping of KEY: VALUE", t.toString());
+            }
+            for (Iterator<Map.Entry<String, JsonNode>> it = t.fields(); it.hasNext(); ) {
+                Map.Entry<String, JsonNode> e = it.next();
+                tags.put(e.getKey(), label(e.getValue(), "tags." + e.getKey(), source));
+            }
+        }
+        return new RunLabels(label(root.get("site"), "site", source),
+                label(root.get("software_version"), "software_version", source), tags);
+    }
+
+    /**
+     * @return a label's text, or null when absent; a fractional number is refused, since YAML and
+     *     JSON read {@code 2.10} as the number 2.1 and the version would silently change
+     */
+    private static String label(JsonNode v, String field, String source) {
+        if (v == null || v.isNull()) {
+            return null;
+        }
+        if (!v.isValueNode()) {
+            throw new InputException(source, 0, field, InputProblem.INVALID_CONFIGURATION,
+                    field + " must be a single value", v.toString());
+        }
+        if (v.isNumber() && !v.isIntegralNumber()) {
+            throw new InputException(source, 0, field, InputProblem.INVALID_CONFIGURATION,
+                    field + " must be text: quote it (\"2.10\"), a number loses trailing zeros", v.asText());
+        }
+        return v.asText();
+    }
+
+    /**
+     * @return the run's {@code plot} switch (false when absent): draw {@code eval --plot}'s figures
+     *     beside the report
+     * @throws InputException when it is not true or false
+     */
+    public static boolean plot(JsonNode node, String source) {
+        JsonNode v = node.get("plot");
+        if (v == null || v.isNull()) {
+            return false;
+        }
+        if (!v.isBoolean()) {
+            throw new InputException(source, 0, "plot", InputProblem.INVALID_CONFIGURATION,
+                    "'plot' must be true or false", v.asText());
+        }
+        return v.asBoolean();
     }
 
     private static Long seed(JsonNode node, String source) {

@@ -26,6 +26,7 @@ import org.trajeval.pipeline.RunMetadata;
  * estimate: estimate.csv # required, relative to the bundle
  * metrics:               # optional: any key of the settings table (org.trajeval.core.options.Setting)
  *   alignment: se2       #   paths (ref_times, est_times) are relative to the bundle and stay inside it
+ * plot: true             # optional (default false): eval --plot's figures in reports/RUN_ID.plots/
  * </pre>
  * Unknown keys are refused (a typo must not silently change a metric).
  *
@@ -33,14 +34,16 @@ import org.trajeval.pipeline.RunMetadata;
  * @param reference the reference path as written
  * @param estimate the estimate path as written
  * @param settings the metric settings
+ * @param plot true to draw the run's figures beside its report
  */
-public record RunManifest(RunMetadata metadata, String reference, String estimate, SettingValues settings) {
+public record RunManifest(RunMetadata metadata, String reference, String estimate, SettingValues settings,
+        boolean plot) {
     /** Name of the manifest file in a bundle. */
     public static final String FILE_NAME = "run.yaml";
 
     private static final ObjectMapper YAML = org.trajeval.core.io.StrictMappers.yaml();
-    private static final Set<String> KEYS = Set.of("run_id", "robot_id", "sequence", "method", "seed", "reference",
-            "estimate", "metrics");
+    private static final Set<String> KEYS = RunFields.keysWith("reference",
+            "estimate", "metrics", "plot");
 
     /**
      * Reads and checks a manifest file.
@@ -74,6 +77,6 @@ public record RunManifest(RunMetadata metadata, String reference, String estimat
         RunMetadata metadata = RunFields.metadata(root, source);
         SettingValues settings = RunFields.settings(root, source);
         return new RunManifest(metadata, RunFields.text(root, "reference", source, true),
-                RunFields.text(root, "estimate", source, true), settings);
+                RunFields.text(root, "estimate", source, true), settings, RunFields.plot(root, source));
     }
 }

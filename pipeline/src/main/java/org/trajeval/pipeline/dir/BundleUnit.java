@@ -2,16 +2,17 @@ package org.trajeval.pipeline.dir;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.trajeval.pipeline.bundle.BareBag;
 import org.trajeval.pipeline.bundle.BundleKind;
 import org.trajeval.pipeline.bundle.BundleOpener;
 
 /**
  * A bundle as it sits in incoming/: its kind and name, the file names that belong to it and its
- * marker. Its slot in processing/ is named {@code NAME} (folder), {@code NAME.zip} (zip) or
- * {@code NAME.pair} (pair).
+ * marker. Its slot in processing/ is named {@code NAME} (folder), {@code NAME.zip} (zip),
+ * {@code NAME.pair} (pair) or the bag's file name (bare bag).
  *
- * @param kind folder, zip or pair
- * @param name folder name, zip name without ".zip", or the pair's NAME
+ * @param kind folder, zip, pair or bag
+ * @param name folder name, zip name without ".zip", the pair's NAME, or the bag's file name ({@code NAME.mcap})
  * @param marker the marker file name, or {@code null} (completed by quiet time)
  */
 public record BundleUnit(BundleKind kind, String name, String marker) {
@@ -21,6 +22,7 @@ public record BundleUnit(BundleKind kind, String name, String marker) {
             case FOLDER -> List.of(name);
             case ZIP -> List.of(name + ".zip");
             case PAIR -> List.of(name + BundleOpener.PAIR_REFERENCE, name + BundleOpener.PAIR_ESTIMATE);
+            case BAG -> List.of(name);
         };
     }
 
@@ -37,7 +39,11 @@ public record BundleUnit(BundleKind kind, String name, String marker) {
 
     /** @return the marker names that complete this bundle */
     public List<String> candidateMarkers() {
-        return kind == BundleKind.ZIP ? List.of(name + ".done", name + ".zip.done") : List.of(name + ".done");
+        return switch (kind) {
+            case ZIP -> List.of(name + ".done", name + ".zip.done");
+            case BAG -> List.of(BareBag.stem(name) + ".done", name + ".done");
+            default -> List.of(name + ".done");
+        };
     }
 
     /** @return the slot folder name in processing/ */
@@ -46,6 +52,7 @@ public record BundleUnit(BundleKind kind, String name, String marker) {
             case FOLDER -> name;
             case ZIP -> name + ".zip";
             case PAIR -> name + ".pair";
+            case BAG -> name;
         };
     }
 
@@ -53,6 +60,9 @@ public record BundleUnit(BundleKind kind, String name, String marker) {
     public static BundleUnit ofSlot(String slot) {
         if (slot.endsWith(".zip")) {
             return new BundleUnit(BundleKind.ZIP, slot.substring(0, slot.length() - 4), null);
+        }
+        if (BareBag.stem(slot) != null) {
+            return new BundleUnit(BundleKind.BAG, slot, null);
         }
         if (slot.endsWith(".pair")) {
             return new BundleUnit(BundleKind.PAIR, slot.substring(0, slot.length() - 5), null);

@@ -319,6 +319,7 @@ public final class DirectoryService {
                 case FOLDER -> slot.dir().resolve(unit.name());
                 case ZIP -> slot.dir().resolve(unit.name() + ".zip");
                 case PAIR -> slot.dir();
+                case BAG -> slot.dir().resolve(unit.name());
             };
             RunJob job = opener.open(unit.kind(), payload, unit.name(), scratch);
             result = processor.process(job);

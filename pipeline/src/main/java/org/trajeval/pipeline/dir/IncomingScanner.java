@@ -8,13 +8,15 @@ import java.nio.file.attribute.FileTime;
 import java.time.Clock;
 import java.time.Duration;
 import java.util.stream.Stream;
+import org.trajeval.pipeline.bundle.BareBag;
 import org.trajeval.pipeline.bundle.BundleKind;
 import org.trajeval.pipeline.bundle.BundleOpener;
 
 /**
  * Decides, for one entry of incoming/, whether it is the key of a complete bundle. The key is
- * the marker ({@code NAME.done}); under {@link Completion#MARKER_OR_QUIET} also a folder, zip or
- * {@code NAME.est.csv} without a marker that has been unchanged for the quiet time. Hidden and
+ * the marker ({@code NAME.done}); under {@link Completion#MARKER_OR_QUIET} also a folder, zip,
+ * {@code NAME.est.csv} or bare bag ({@code NAME.mcap}, .bag, .db3) without a marker that has been
+ * unchanged for the quiet time. Hidden and
  * temporary files are never keys.
  */
 final class IncomingScanner {
@@ -68,6 +70,10 @@ final class IncomingScanner {
                     || Files.exists(incoming.resolve(base + BundleOpener.PAIR_REFERENCE), LinkOption.NOFOLLOW_LINKS)) {
                 return new BundleUnit(BundleKind.PAIR, base, name);
             }
+            String bag = bareBag(base);
+            if (bag != null) {
+                return new BundleUnit(BundleKind.BAG, bag, name);
+            }
             if (Files.exists(incoming.resolve(base), LinkOption.NOFOLLOW_LINKS)) {
                 // a marker beside a single file that is no bundle: hand it on, it will be refused with the reason
                 return new BundleUnit(BundleKind.FOLDER, base, name);
@@ -83,6 +89,8 @@ final class IncomingScanner {
             unit = new BundleUnit(BundleKind.FOLDER, name, null);
         } else if (name.endsWith(".zip")) {
             unit = new BundleUnit(BundleKind.ZIP, name.substring(0, name.length() - 4), null);
+        } else if (BareBag.stem(name) != null) {
+            unit = new BundleUnit(BundleKind.BAG, name, null);
         } else if (name.endsWith(BundleOpener.PAIR_ESTIMATE)) {
             unit = new BundleUnit(BundleKind.PAIR, name.substring(0, name.length() - BundleOpener.PAIR_ESTIMATE.length()),
                     null);
@@ -100,6 +108,19 @@ final class IncomingScanner {
             }
         }
         return unit;
+    }
+
+    /** @return the bare bag a marker {@code base.done} completes ({@code base} itself, or base.mcap/.bag/.db3), or null */
+    private String bareBag(String base) {
+        if (BareBag.stem(base) != null && Files.isRegularFile(incoming.resolve(base), LinkOption.NOFOLLOW_LINKS)) {
+            return base;
+        }
+        for (String ext : BareBag.EXTENSIONS) {
+            if (Files.isRegularFile(incoming.resolve(base + ext), LinkOption.NOFOLLOW_LINKS)) {
+                return base + ext;
+            }
+        }
+        return null;
     }
 
     private boolean quiet(Path p) {

@@ -78,7 +78,7 @@ public final class KafkaMode {
                     () -> metrics.runsHeld().get())) {
                 KafkaService service = new KafkaService(s, clients, processor,
                         new Republisher(ledger, store, s.outputTopic()), c.bundleLimits(), metrics, watch,
-                        Clock.systemUTC());
+                        Clock.systemUTC(), c.bagSettings());
                 HttpEndpoint http = c.http().enabled() ? HttpEndpoint.startWithReason(c.http().host(), c.http().port(),
                         metrics::scrape, () -> service.isRunning() ? watch.health()
                                 : HealthStatus.down("not consuming (waiting for the broker at " + clients.bootstrapServers()

@@ -111,12 +111,23 @@ public final class KafkaService {
      */
     public KafkaService(KafkaSettings settings, KafkaClients clients, RunProcessor processor, Republisher republisher,
             BundleLimits limits, PipelineMetrics metrics, BrokerWatch watch, Clock clock) {
+        this(settings, clients, processor, republisher, limits, metrics, watch, clock,
+                org.trajeval.core.options.SettingValues.DEFAULTS);
+    }
+
+    /**
+     * As above, with the settings bare bags named by events are scored with (the configuration's
+     * {@code bags.metrics}).
+     */
+    public KafkaService(KafkaSettings settings, KafkaClients clients, RunProcessor processor, Republisher republisher,
+            BundleLimits limits, PipelineMetrics metrics, BrokerWatch watch, Clock clock,
+            org.trajeval.core.options.SettingValues bagSettings) {
         this.settings = settings;
         this.clients = clients;
         this.processor = processor;
         this.republisher = republisher;
         this.limits = limits;
-        this.opener = new BundleOpener(limits);
+        this.opener = new BundleOpener(limits, bagSettings);
         this.metrics = metrics;
         this.watch = watch;
         this.clock = clock;
@@ -466,6 +477,11 @@ public final class KafkaService {
                     throw new StageException(RunFailure.of(Stage.UNPACK, e), e);
                 }
                 String file = p.getFileName().toString();
+                if (org.trajeval.pipeline.bundle.BareBag.stem(file) != null
+                        && Files.isRegularFile(p, LinkOption.NOFOLLOW_LINKS)) {
+                    // a bare bag: the event's identity, the configured bags.metrics
+                    return opener.openBag(p, event.metadata(), source);
+                }
                 boolean zip = file.endsWith(".zip") && Files.isRegularFile(p, LinkOption.NOFOLLOW_LINKS);
                 RunJob job = opener.open(zip ? BundleKind.ZIP : BundleKind.FOLDER, p,
                         zip ? file.substring(0, file.length() - 4) : file, scratch.resolve("unpacked"));
@@ -475,7 +491,8 @@ public final class KafkaService {
                             event.metadata().runId());
                     throw new StageException(RunFailure.of(Stage.MANIFEST, e), e);
                 }
-                return new RunJob(job.metadata(), job.reference(), job.estimate(), job.settings(), source, job.folder());
+                return new RunJob(job.metadata(), job.reference(), job.estimate(), job.settings(), source, job.folder(),
+                        job.plot());
             }
             Path ref = writeInline(scratch.resolve("reference"), event.reference(), source, "reference");
             Path est = writeInline(scratch.resolve("estimate"), event.estimate(), source, "estimate");

@@ -17,7 +17,9 @@ import org.trajeval.pipeline.RunMetadata;
  * trajectories inline:
  * <pre>
  * {"run_id": "r0412", "robot_id": "bot-3", "bundle": "night-07/r0412.zip"}
+ * {"run_id": "r0414", "robot_id": "bot-3", "bundle": "night-07/r0414.mcap"}   (a bare bag: bags.metrics of the configuration)
  * {"run_id": "r0413", "robot_id": "bot-3", "sequence": "hall", "method": "orb", "seed": 1,
+ *  "site": "hamburg", "software_version": "2.10", "tags": {"shift": "night"},
  *  "reference": {"file_name": "gt.csv", "data": "t,x,y,yaw\n0,0,0,0\n..."},
  *  "estimate":  {"file_name": "est.csv", "data": "..."},
  *  "metrics": {"alignment": "se2"}}
@@ -31,7 +33,7 @@ import org.trajeval.pipeline.RunMetadata;
  */
 public record RunEvent(RunMetadata metadata, String bundle, Inline reference, Inline estimate, SettingValues settings) {
     private static final ObjectMapper JSON = org.trajeval.core.io.StrictMappers.json();
-    private static final Set<String> KEYS = Set.of("run_id", "robot_id", "sequence", "method", "seed", "bundle",
+    private static final Set<String> KEYS = RunFields.keysWith("bundle",
             "reference", "estimate", "metrics");
     private static final Pattern FILE_NAME = Pattern.compile("[A-Za-z0-9_-][A-Za-z0-9._-]{0,100}");
 
@@ -69,7 +71,14 @@ public record RunEvent(RunMetadata metadata, String bundle, Inline reference, In
         }
         if (bundle != null && root.hasNonNull("metrics")) {
             throw new InputException(source, 0, "metrics", InputProblem.INVALID_CONFIGURATION,
-                    "a bundle event takes its settings from the bundle's run.yaml; put metrics there", null);
+                    "a bundle event takes its settings from the bundle's run.yaml (a bare bag's from the service "
+                            + "configuration's bags.metrics); put metrics there", null);
+        }
+        for (String label : new String[] {"site", "software_version", "tags"}) {
+            if (bundle != null && root.hasNonNull(label)) {
+                throw new InputException(source, 0, label, InputProblem.INVALID_CONFIGURATION,
+                        "a bundle event takes its labels from the bundle's run.yaml; put " + label + " there", null);
+            }
         }
         SettingValues settings = RunFields.settings(root, source);
         for (Setting s : new Setting[] {Setting.REF_TIMES, Setting.EST_TIMES}) {

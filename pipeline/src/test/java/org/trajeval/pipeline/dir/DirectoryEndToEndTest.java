@@ -41,7 +41,7 @@ class DirectoryEndToEndTest {
         Set<String> good = new HashSet<>();
         Set<String> bad = new HashSet<>();
         int duplicates = 0;
-        try (ServiceHarness h = new ServiceHarness(root, TestScorers.realOrStandIn(),
+        try (ServiceHarness h = new ServiceHarness(root, TestScorers.real(),
                 new DirectoryOptions(2, 2, Completion.MARKER, Duration.ofSeconds(60), Duration.ofMillis(20)),
                 BundleLimits.DEFAULTS)) {
             ExecutorService bg = Executors.newSingleThreadExecutor();

@@ -10,15 +10,23 @@ import java.util.Objects;
  * @param stamps header stamps (default, as evo) or log times
  * @param poseField the field holding the pose for a type trajeval does not know ({@code a.b.pose}), or null
  * @param limits record and message limits
+ * @param integrity the MCAP checksums to verify (all, or those of the chunks read)
  */
-public record BagReadOptions(String topic, StampSource stamps, String poseField, BagLimits limits) {
-    /** No topic, header stamps, the type's own pose field, default limits. */
+public record BagReadOptions(String topic, StampSource stamps, String poseField, BagLimits limits,
+        BagIntegrity integrity) {
+    /** No topic, header stamps, the type's own pose field, default limits, every checksum. */
     public static final BagReadOptions DEFAULT = new BagReadOptions(null, StampSource.HEADER, null, BagLimits.DEFAULT);
 
-    /** @throws NullPointerException on a missing stamp source or limits */
+    /** @throws NullPointerException on a missing stamp source, limits or integrity */
     public BagReadOptions {
         Objects.requireNonNull(stamps, "stamps");
         Objects.requireNonNull(limits, "limits");
+        Objects.requireNonNull(integrity, "integrity");
+    }
+
+    /** Every checksum ({@link BagIntegrity#ALL}). */
+    public BagReadOptions(String topic, StampSource stamps, String poseField, BagLimits limits) {
+        this(topic, stamps, poseField, limits, BagIntegrity.ALL);
     }
 
     /** @return header stamps, the type's own pose field, default limits */
@@ -28,6 +36,6 @@ public record BagReadOptions(String topic, StampSource stamps, String poseField,
 
     /** @return a copy reading another topic */
     public BagReadOptions withTopic(String t) {
-        return new BagReadOptions(t, stamps, poseField, limits);
+        return new BagReadOptions(t, stamps, poseField, limits, integrity);
     }
 }

@@ -34,7 +34,7 @@ public final class BagTrajectoryReader {
         String source = path.toString();
         PoseColumns cols = new PoseColumns();
         String reason;
-        try (BagContainer c = Bags.open(path, source, bag.limits())) {
+        try (BagContainer c = Bags.open(path, source, bag.limits(), bag.integrity())) {
             if (TfTrajectory.isTfId(bag.topic())) {
                 long dropped = TfTrajectory.read(c, source, bag, cols);
                 reason = "auto: " + c.kind() + " bag, TF " + bag.topic() + (dropped == 0 ? ""
@@ -51,8 +51,13 @@ public final class BagTrajectoryReader {
         }
         int[] order = order(what, cols, read);
         checkQuaternions(what, cols, read.quaternionTolerance());
-        double[][] d = cols.columns(order);
-        SpatialTrajectory t = SpatialTrajectory.of(d[0], d[1], d[2], d[3], d[4], d[5], d[6], d[7]);
+        SpatialTrajectory t;
+        if (order == null) { // the columns as read, spare capacity and all: no copy
+            t = SpatialTrajectory.ofFirst(cols.n, cols.t, cols.x, cols.y, cols.z, cols.qw, cols.qx, cols.qy, cols.qz);
+        } else {
+            double[][] d = cols.columns(order);
+            t = SpatialTrajectory.of(d[0], d[1], d[2], d[3], d[4], d[5], d[6], d[7]);
+        }
         return new LoadedTrajectory(what, TrajectoryFormat.BAG, reason, t, null, false);
     }
 

@@ -73,6 +73,15 @@ public final class Bags {
      * @throws InputException when the path is not a bag or its structure is broken
      */
     public static BagContainer open(Path path, String source, BagLimits limits) {
+        return open(path, source, limits, BagIntegrity.ALL);
+    }
+
+    /**
+     * @param source the name used in messages
+     * @param integrity the MCAP checksums to verify
+     * @throws InputException when the path is not a bag, its structure is broken or a checksum does not match
+     */
+    public static BagContainer open(Path path, String source, BagLimits limits, BagIntegrity integrity) {
         if (!Files.exists(path)) {
             throw new InputException(source, 0, null, InputProblem.UNREADABLE, "the file does not exist", null);
         }
@@ -82,10 +91,10 @@ public final class Bags {
                     + "magic, '#ROSBAG V2.0', an SQLite header, or a folder with metadata.yaml)", null);
         }
         return switch (k) {
-            case MCAP -> new McapReader(path, source, limits);
+            case MCAP -> new McapReader(path, source, limits, integrity);
             case ROS1 -> new Ros1BagReader(path, source, limits);
             case SQLITE3 -> new Sqlite3BagReader(path, source, limits);
-            case ROSBAG2_FOLDER -> Rosbag2Folder.open(path, source, limits);
+            case ROSBAG2_FOLDER -> Rosbag2Folder.open(path, source, limits, integrity);
         };
     }
 }

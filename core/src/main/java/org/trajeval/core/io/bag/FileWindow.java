@@ -15,6 +15,8 @@ final class FileWindow implements AutoCloseable {
     private final long size;
     private final String source;
     private final BagLimits limits;
+    /** The block buffer of {@link #crc}, made on first use. */
+    private ByteBuffer block;
 
     FileWindow(Path path, String source, BagLimits limits) {
         this.source = source;
@@ -73,6 +75,40 @@ final class FileWindow implements AutoCloseable {
             throw BagProblems.io(source, e);
         }
         return b;
+    }
+
+    /**
+     * Feeds the bytes {@code [offset, offset + length)} to a CRC, in blocks of 1 MiB through one
+     * reused buffer (never more in memory, whatever the length).
+     *
+     * @param what the range, for the refusal when the file ends early
+     */
+    void crc(java.util.zip.CRC32 crc, long offset, long length, String what) {
+        if (offset < 0 || length < 0 || length > size - offset) {
+            throw BagProblems.length(source, offset, what, length, size - Math.max(0, offset));
+        }
+        int want = (int) Math.max(4096, Math.min(1 << 20, length)); // at most 1 MiB; a small file, a small buffer
+        if (block == null || block.capacity() < want) {
+            block = ByteBuffer.allocateDirect(want);
+        }
+        long at = offset;
+        long end = offset + length;
+        try {
+            while (at < end) {
+                block.clear();
+                block.limit((int) Math.min(block.capacity(), end - at));
+                int r = channel.read(block, at);
+                if (r < 0) {
+                    throw BagProblems.corrupt(source, at, "the file ended while reading " + what
+                            + " (it shrank while being read?)");
+                }
+                block.flip();
+                crc.update(block);
+                at += r;
+            }
+        } catch (IOException e) {
+            throw BagProblems.io(source, e);
+        }
     }
 
     @Override

@@ -15,8 +15,9 @@ import java.util.zip.CRC32;
  * MCAP files (mcap.dev/spec): magic, then records of {@code opcode u8, length u64, content}. With a
  * summary section (found through the footer), only the chunks whose message indexes name a wanted
  * channel are read and decompressed; without one, the data section is scanned from the start. The
- * summary CRC and each chunk's CRC of its uncompressed records are checked when the writer set them
- * (0 means "not computed", as the spec says).
+ * data section CRC ({@link McapDataCrc}, one sequential pass over the data section at open, unless
+ * {@link BagIntegrity#CHUNKS}), the summary CRC and each read chunk's CRC of its uncompressed records are checked when the writer set
+ * them (0 means "not computed", as the spec says).
  */
 final class McapReader implements BagContainer {
     static final byte[] MAGIC = {(byte) 0x89, 'M', 'C', 'A', 'P', 0x30, '\r', '\n'};
@@ -30,6 +31,8 @@ final class McapReader implements BagContainer {
     static final int OP_DATA_END = 0x0F;
     /** Footer record: opcode, length, summary start, summary offset start, summary CRC. */
     static final int FOOTER_RECORD_BYTES = 1 + 8 + 8 + 8 + 4;
+    /** Message record header: channel id u16, sequence u32, log time u64, publish time u64. */
+    static final int MESSAGE_HEADER_BYTES = 2 + 4 + 8 + 8;
 
     private record Schema(String name, String encoding, String text) {
     }
@@ -42,17 +45,19 @@ final class McapReader implements BagContainer {
     private final String source;
     private final Map<Integer, Schema> schemas = new HashMap<>();
     private final Map<Integer, BagChannel> channels = new TreeMap<>();
+    /** The same channels by id (MCAP channel ids are u16): one array load per message. */
+    private final BagChannel[] byId = new BagChannel[1 << 16];
     private final List<ChunkRef> chunks = new ArrayList<>();
     private boolean indexed;
     /** During a linear scan: which channels are wanted, updated as channel records appear. */
     private Predicate<BagChannel> scanWanted;
     private boolean[] scanWant;
 
-    McapReader(Path path, String source, BagLimits limits) {
+    McapReader(Path path, String source, BagLimits limits, BagIntegrity integrity) {
         this.file = new FileWindow(path, source, limits);
         this.source = source;
         try {
-            open();
+            open(integrity);
         } catch (RuntimeException e) {
             file.close();
             throw e;
@@ -64,23 +69,28 @@ final class McapReader implements BagContainer {
         return "MCAP";
     }
 
-    private void open() {
+    private void open(BagIntegrity integrity) {
         long size = file.size();
         if (size < MAGIC.length || !Arrays.equals(file.read(0, MAGIC.length, "magic"), MAGIC)) {
             throw BagProblems.corrupt(source, 0, "not an MCAP file (the first 8 bytes are not the MCAP magic)");
         }
         long footerAt = size - MAGIC.length - FOOTER_RECORD_BYTES;
+        long dataEndAt = -1;
         if (footerAt >= MAGIC.length) {
             byte[] tail = file.read(footerAt, FOOTER_RECORD_BYTES + MAGIC.length, "footer");
             boolean magicEnd = Arrays.equals(Arrays.copyOfRange(tail, FOOTER_RECORD_BYTES, tail.length), MAGIC);
             if (magicEnd && tail[0] == OP_FOOTER && ByteCursor.le64(tail, 1) == 20) {
                 long summaryStart = ByteCursor.le64(tail, 9);
                 long summaryCrc = ByteCursor.le32(tail, 25) & 0xffffffffL;
+                dataEndAt = (summaryStart != 0 ? summaryStart : footerAt) - McapDataCrc.DATA_END_RECORD_BYTES;
                 if (summaryStart != 0) {
                     readSummary(summaryStart, footerAt, tail, summaryCrc);
                     indexed = !chunks.isEmpty() || !channels.isEmpty();
                 }
             }
+        }
+        if (integrity == BagIntegrity.ALL) {
+            McapDataCrc.verify(file, source, dataEndAt);
         }
         if (!indexed) {
             // no summary: the channels come from one pass over the data section
@@ -147,6 +157,7 @@ final class McapReader implements BagContainer {
             BagChannel ch = new BagChannel(id, topic, s == null ? "" : s.name(), s == null ? "" : s.encoding(),
                     s == null ? "" : s.text(), encoding);
             channels.put(id, ch);
+            byId[id] = ch;
             if (scanWant != null) {
                 scanWant[id] = scanWanted.test(ch);
             }
@@ -231,16 +242,26 @@ final class McapReader implements BagContainer {
             throw BagProblems.corrupt(source, r.offset(), where + " claims " + Long.toUnsignedString(size)
                     + " uncompressed bytes, more than the limit of " + file.limits().maxRecordBytes());
         }
-        byte[] records = ChunkCodec.decompress(source, where, compression, r.buf, r.pos, len, (int) size);
+        byte[] records;
+        int from;
+        if ((compression.isEmpty() || compression.equalsIgnoreCase("none")) && len == size) {
+            records = r.buf; // uncompressed: the records are read where they lie, not copied
+            from = r.pos;
+        } else {
+            records = ChunkCodec.decompress(source, where, compression, r.buf, r.pos, len, (int) size);
+            from = 0;
+        }
         if (crc != 0) {
             CRC32 c = new CRC32();
-            c.update(records);
+            c.update(records, from, (int) size);
             if (c.getValue() != crc) {
                 throw BagProblems.corrupt(source, -1, where + ": CRC of the uncompressed records mismatch (computed "
                         + hex(c.getValue()) + ", chunk says " + hex(crc) + ")");
             }
         }
-        records(new ByteCursor(records, 0, records.length, source, -1, where), want, sink, false);
+        // in place, the bytes are the file's: offsets in refusals stay file offsets
+        records(new ByteCursor(records, from, from + (int) size, source, records == r.buf ? r.base : -1, where), want,
+                sink, false);
     }
 
     /**
@@ -248,30 +269,36 @@ final class McapReader implements BagContainer {
      * chunks opened (in a linear scan). Stops at the data end or the footer.
      */
     private boolean records(ByteCursor c, boolean[] want, MessageSink sink, boolean top) {
+        byte[] b = c.buf;
         while (c.remaining() > 0) {
             long at = c.offset();
             int op = c.u8("record opcode");
             int len = c.length(8, "record length");
-            ByteCursor r = new ByteCursor(c.buf, c.pos, c.pos + len, source, c.base, "record at "
-                    + (c.base >= 0 ? "byte " : "chunk offset ") + at);
+            int from = c.pos;
             c.pos += len;
+            if (op == OP_MESSAGE) {
+                // the hot path, one per message: read in place, no cursor, no text built
+                if (len < MESSAGE_HEADER_BYTES) {
+                    throw BagProblems.corrupt(source, c.base >= 0 ? at : -1, "a message record of " + len
+                            + " bytes is shorter than its " + MESSAGE_HEADER_BYTES + "-byte header (" + c.where + ")");
+                }
+                int id = (b[from] & 0xff) | (b[from + 1] & 0xff) << 8;
+                if (want != null && want[id]) {
+                    BagChannel ch = byId[id];
+                    if (ch == null) {
+                        throw BagProblems.corrupt(source, c.base >= 0 ? at : -1, "a message names channel " + id
+                                + ", which is not defined before it");
+                    }
+                    long logTime = ByteCursor.le64(b, from + 6);
+                    sink.message(ch, logTime, b, from + MESSAGE_HEADER_BYTES, len - MESSAGE_HEADER_BYTES);
+                }
+                continue;
+            }
+            ByteCursor r = new ByteCursor(b, from, from + len, source, c.base, "record at "
+                    + (c.base >= 0 ? "byte " : "chunk offset ") + at);
             switch (op) {
                 case OP_SCHEMA -> schema(r);
                 case OP_CHANNEL -> channel(r);
-                case OP_MESSAGE -> {
-                    int id = r.u16("message channel id");
-                    r.u32("message sequence");
-                    long logTime = r.u64("message log time");
-                    r.u64("message publish time");
-                    if (want != null && want[id]) {
-                        BagChannel ch = channels.get(id);
-                        if (ch == null) {
-                            throw BagProblems.corrupt(source, c.base >= 0 ? at : -1, "a message names channel " + id
-                                    + ", which is not defined before it");
-                        }
-                        sink.message(ch, logTime, r.buf, r.pos, r.remaining());
-                    }
-                }
                 case OP_CHUNK -> {
                     if (!top) {
                         throw BagProblems.corrupt(source, -1, "a chunk inside a chunk (" + r.where + ")");

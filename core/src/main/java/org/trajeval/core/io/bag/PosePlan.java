@@ -165,18 +165,20 @@ final class PosePlan {
         }
     }
 
+    // Each VarHandle.get is cast where it is called: inside a ?: without its own cast the call is
+    // typed Object, which boxes every value and takes the generic (slow) invocation path.
     private double number(Primitive p) {
         align(p.cdrAlignment());
         need(p.size);
         int at = pos;
         pos += p.size;
         return switch (p) {
-            case FLOAT64 -> Double.longBitsToDouble((long) (little ? LE64.get(buf, at) : BE64.get(buf, at)));
-            case FLOAT32 -> Float.intBitsToFloat((int) (little ? LE32.get(buf, at) : BE32.get(buf, at)));
-            case INT32 -> (int) (little ? LE32.get(buf, at) : BE32.get(buf, at));
-            case UINT32 -> ((int) (little ? LE32.get(buf, at) : BE32.get(buf, at))) & 0xffffffffL;
-            case INT64 -> (long) (little ? LE64.get(buf, at) : BE64.get(buf, at));
-            case UINT64 -> unsigned((long) (little ? LE64.get(buf, at) : BE64.get(buf, at)));
+            case FLOAT64 -> Double.longBitsToDouble((little ? (long) LE64.get(buf, at) : (long) BE64.get(buf, at)));
+            case FLOAT32 -> Float.intBitsToFloat((little ? (int) LE32.get(buf, at) : (int) BE32.get(buf, at)));
+            case INT32 -> (little ? (int) LE32.get(buf, at) : (int) BE32.get(buf, at));
+            case UINT32 -> ((little ? (int) LE32.get(buf, at) : (int) BE32.get(buf, at))) & 0xffffffffL;
+            case INT64 -> (little ? (long) LE64.get(buf, at) : (long) BE64.get(buf, at));
+            case UINT64 -> unsigned((little ? (long) LE64.get(buf, at) : (long) BE64.get(buf, at)));
             case INT16 -> (short) (little ? (buf[at] & 0xff | buf[at + 1] << 8) : (buf[at + 1] & 0xff | buf[at] << 8));
             case UINT16 -> little ? (buf[at] & 0xff | (buf[at + 1] & 0xff) << 8) : (buf[at + 1] & 0xff | (buf[at] & 0xff) << 8);
             case INT8 -> buf[at];
@@ -191,7 +193,7 @@ final class PosePlan {
     private long u32() {
         int at = pos;
         pos += 4;
-        return ((int) (little ? LE32.get(buf, at) : BE32.get(buf, at))) & 0xffffffffL;
+        return ((little ? (int) LE32.get(buf, at) : (int) BE32.get(buf, at))) & 0xffffffffL;
     }
 
     /** A uint32 count of elements of at least {@code minBytes} each, checked against what remains. */

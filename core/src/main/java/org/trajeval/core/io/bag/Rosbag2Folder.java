@@ -44,7 +44,7 @@ final class Rosbag2Folder implements BagContainer {
     }
 
     /** Opens the storage files the folder's metadata.yaml names. */
-    static BagContainer open(Path folder, String source, BagLimits limits) {
+    static BagContainer open(Path folder, String source, BagLimits limits, BagIntegrity integrity) {
         Path meta = folder.resolve("metadata.yaml");
         String where = meta.toString();
         JsonNode info;
@@ -78,7 +78,7 @@ final class Rosbag2Folder implements BagContainer {
                     throw new InputException(name, 0, null, InputProblem.UNREADABLE,
                             "the storage file named in metadata.yaml does not exist", null);
                 }
-                parts.add(storage.equals("mcap") ? new McapReader(p, name, limits) : new Sqlite3BagReader(p, name, limits));
+                parts.add(storage.equals("mcap") ? new McapReader(p, name, limits, integrity) : new Sqlite3BagReader(p, name, limits));
             }
         } catch (RuntimeException e) {
             parts.forEach(BagContainer::close);

@@ -53,6 +53,9 @@ final class Sqlite3BagReader implements BagContainer {
         } catch (SQLException e) {
             close();
             throw problem(e);
+        } catch (RuntimeException e) {
+            close(); // a refused file (a topics row without a name) must not keep its connection and file open
+            throw e;
         }
     }
 

@@ -72,6 +72,22 @@ final class TopicPoses {
         return PosePlan.compile(type, layout.captures(), layout.repeatPath(), cdr);
     }
 
+    /** @return the plan of a channel read as a topic: the frame names are skipped, not read (no string per message) */
+    private static PosePlan posesOnly(String source, BagChannel c, String poseField, PoseLayout[] layoutOut) {
+        plan(source, c, poseField, layoutOut); // checks encodings and the definition, gives the layout
+        PoseLayout layout = layoutOut[0];
+        Map<String, Integer> numbers = new HashMap<>();
+        layout.captures().forEach((path, slot) -> {
+            if (slot >= 0) {
+                numbers.put(path, slot);
+            }
+        });
+        boolean cdr = c.messageEncoding().equalsIgnoreCase("cdr");
+        MessageType type = MessageDefinitions.parse(source, c.topic(), c.type(), c.schema(),
+                cdr ? MessageDefinitions.Dialect.ROS2 : MessageDefinitions.Dialect.ROS1);
+        return PosePlan.compile(type, numbers, layout.repeatPath(), cdr);
+    }
+
     /**
      * Reads every pose of the topic into the columns, in the bag's order.
      *
@@ -83,7 +99,7 @@ final class TopicPoses {
         Map<Integer, PoseLayout> layouts = new HashMap<>();
         for (BagChannel c : chans) {
             PoseLayout[] l = new PoseLayout[1];
-            plans.put(c.id(), plan(source, c, options.poseField(), l));
+            plans.put(c.id(), posesOnly(source, c, options.poseField(), l));
             layouts.put(c.id(), l[0]);
             if ("transforms".equals(l[0].repeatPath()) && options.poseField() == null) {
                 throw new InputException(source, 0, options.topic(), InputProblem.UNKNOWN_TOPIC, "topic "
@@ -97,6 +113,9 @@ final class TopicPoses {
             }
         }
         long[] count = {0};
+        BagChannel[] current = {null};
+        PosePlan[] currentPlan = {null};
+        boolean[] currentLastOnly = {false};
         double[] logT = {0};
         boolean useLog = options.stamps() == StampSource.LOG_TIME;
         long max = options.limits().maxMessages();
@@ -110,11 +129,16 @@ final class TopicPoses {
                     v[PosePlan.QZ]);
         };
         bag.read(c -> c.topic().equals(options.topic()), (ch, logTimeNs, data, off, len) -> {
-            PosePlan p = plans.get(ch.id());
+            if (ch != current[0]) { // a new channel: look its plan up once, not per message
+                current[0] = ch;
+                currentPlan[0] = plans.get(ch.id());
+                currentLastOnly[0] = currentPlan[0] != null && layouts.get(ch.id()).lastMessageOnly();
+            }
+            PosePlan p = currentPlan[0];
             if (p == null) {
                 return;
             }
-            if (layouts.get(ch.id()).lastMessageOnly()) {
+            if (currentLastOnly[0]) {
                 out.clear();
             }
             logT[0] = logTimeNs / 1e9;

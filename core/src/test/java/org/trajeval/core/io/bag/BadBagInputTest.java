@@ -35,6 +35,22 @@ class BadBagInputTest {
         return t;
     }
 
+    private static final byte[] IMAGE = new byte[64];
+
+    static {
+        for (int i = 0; i < IMAGE.length; i++) {
+            IMAGE[i] = (byte) (37 * i + 11);
+        }
+    }
+
+    private static BagWriters.Topic imageTopic() {
+        BagWriters.Topic t = new BagWriters.Topic("/image", "sensor_msgs/msg/Image", "uint8[] data\n");
+        for (BagWriters.Pose p : POSES) {
+            t.add(p.stampNs() + 1, IMAGE);
+        }
+        return t;
+    }
+
     private InputException refused(byte[] bytes, String name, String topic) throws IOException {
         Path p = dir.resolve(name);
         Files.write(p, bytes);
@@ -87,9 +103,86 @@ class BadBagInputTest {
         // flip one byte of the last pose's quaternion inside the (uncompressed) chunk
         int at = lastIndexOf(b, BagWriters.cdrPoseStamped(POSES.get(POSES.size() - 1))) + 60;
         b[at] ^= 0x10;
+        BagWriters.resealDataCrc(b); // so the chunk's own CRC is what finds it
         InputException e = refused(b, "crc.mcap", "/pose");
         assertEquals(InputProblem.CORRUPT_BAG, e.problem());
-        assertTrue(e.getMessage().contains("CRC"), e.getMessage());
+        assertTrue(e.getMessage().contains("CRC of the uncompressed records mismatch"), e.getMessage());
+    }
+
+    @Test
+    void byteFlippedInAChunkNoWantedTopicUsesIsRefusedByTheDataSectionCrcNamingItsOffset() throws IOException {
+        for (boolean summary : new boolean[] {true, false}) {
+            byte[] b = BagWriters.mcap(List.of(poseTopic(), imageTopic()), "", 5, summary);
+            int dataEnd = lastIndexOf(b, new byte[] {0x0F, 4, 0, 0, 0, 0, 0, 0, 0});
+            b[lastIndexOf(b, IMAGE) + 17] ^= 0x01; // inside an image message: the /pose chunks stay intact
+            InputException e = refused(b, "flipped.mcap", "/pose");
+            assertEquals(InputProblem.CORRUPT_BAG, e.problem());
+            assertEquals("byte " + dataEnd, e.column(), e.getMessage());
+            assertTrue(e.getMessage().contains("at byte " + dataEnd + ": data section CRC mismatch"), e.getMessage());
+        }
+    }
+
+    @Test
+    void integrityChunksSkipsTheDataSectionPassButStillChecksTheChunksRead() throws IOException {
+        // the 40 images logged after the 40 poses: chunks of 5 are pose-only, then image-only
+        BagWriters.Topic late = new BagWriters.Topic("/image", "sensor_msgs/msg/Image", "uint8[] data\n");
+        for (BagWriters.Pose q : POSES) {
+            late.add(q.stampNs() + 1_000_000_000_000L, IMAGE);
+        }
+        byte[] b = BagWriters.mcap(List.of(poseTopic(), late), "", 5, true);
+        b[lastIndexOf(b, IMAGE) + 17] ^= 0x01; // in an image chunk: only the data section CRC can see it
+        Path p = dir.resolve("chunks.mcap");
+        Files.write(p, b);
+        BagReadOptions chunks = new BagReadOptions("/pose", StampSource.HEADER, null, BagLimits.DEFAULT,
+                BagIntegrity.CHUNKS);
+        assertEquals(POSES.size(), BagTrajectoryReader.read(p, chunks, ReadOptions.defaults()).trajectory().size());
+        assertTrue(refused(b, "chunks-all.mcap", "/pose").getMessage().contains("data section CRC mismatch"));
+
+        byte[] c = BagWriters.mcap(List.of(poseTopic(), imageTopic()), "", 5, true);
+        int at = lastIndexOf(c, BagWriters.cdrPoseStamped(POSES.get(POSES.size() - 1))) + 60;
+        c[at] ^= 0x10; // in a pose chunk: its own CRC refuses it under either choice
+        Files.write(p, c);
+        InputException e = assertThrows(InputException.class,
+                () -> BagTrajectoryReader.read(p, chunks, ReadOptions.defaults()));
+        assertTrue(e.getMessage().contains("CRC of the uncompressed records mismatch"), e.getMessage());
+    }
+
+    @Test
+    void dataSectionCrcZeroMeansNotComputedAndTheWantedChunksStillRead() throws IOException {
+        byte[] b = BagWriters.mcap(List.of(poseTopic(), imageTopic()), "lz4", 5, true);
+        int dataEnd = lastIndexOf(b, new byte[] {0x0F, 4, 0, 0, 0, 0, 0, 0, 0});
+        Arrays.fill(b, dataEnd + 9, dataEnd + 13, (byte) 0); // CRC 0: "not available" (mcap.dev/spec, Data End)
+        Path p = dir.resolve("nocrc.mcap");
+        Files.write(p, b);
+        assertEquals(POSES.size(), BagTrajectoryReader.read(p, BagReadOptions.of("/pose"), ReadOptions.defaults())
+                .trajectory().size());
+    }
+
+    @Test
+    void everyFlippedByteOfTheRealMcapIsRefusedOrChangesNothing() throws IOException {
+        // nav2_turtlebot.mcap (rosbag2's writer) has chunk CRCs and no data section CRC (0): a byte
+        // flipped in a chunk of /odom is found by that chunk's CRC (or its zstd frame); one elsewhere
+        // may go unseen, but then the trajectory must be the intact one
+        Path real = BagEvoParityTest.rosData().resolve("nav2_turtlebot.mcap");
+        ReadOptions keep = ReadOptions.defaults().withDuplicates(org.trajeval.core.io.DuplicateTimestamps.KEEP);
+        byte[] whole = Files.readAllBytes(real);
+        double[] intact = flat(BagTrajectoryReader.read(real, BagReadOptions.of("/odom"), keep));
+        java.util.Random r = new java.util.Random(13);
+        Path p = dir.resolve("flipped-real.mcap");
+        int refusals = 0;
+        for (int i = 0; i < 40; i++) {
+            byte[] b = whole.clone();
+            b[8 + r.nextInt(whole.length - 16)] ^= (byte) (1 << r.nextInt(8));
+            Files.write(p, b);
+            try {
+                double[] x = flat(BagTrajectoryReader.read(p, BagReadOptions.of("/odom"), keep));
+                assertTrue(Arrays.equals(intact, x), "flip " + i + " changed the poses without a refusal");
+            } catch (InputException e) {
+                assertFalse(e.getMessage().contains("\n"), e.getMessage());
+                refusals++;
+            }
+        }
+        assertTrue(refusals > 0, "some flips land in /odom's chunks and must be refused");
     }
 
     @Test
@@ -98,6 +191,7 @@ class BadBagInputTest {
         int chunk = indexOfChunk(b);
         // chunk record: opcode, length u64, start u64, end u64, uncompressed size u64 at +25
         b[chunk + 25] += 3;
+        BagWriters.resealDataCrc(b);
         InputException e = refused(b, "size.mcap", "/pose");
         assertEquals(InputProblem.CORRUPT_BAG, e.problem());
     }
@@ -107,6 +201,8 @@ class BadBagInputTest {
         byte[] b = BagWriters.mcap(List.of(poseTopic()), "", 100, false);
         int chunk = indexOfChunk(b);
         b[chunk + 8] = 0x40; // record length's high byte: 2^62 bytes claimed
+        int dataEnd = lastIndexOf(b, new byte[] {0x0F, 4, 0, 0, 0, 0, 0, 0, 0});
+        Arrays.fill(b, dataEnd + 9, dataEnd + 13, (byte) 0); // no data section CRC: the scan meets the length
         InputException e = refused(b, "long.mcap", "/pose");
         assertEquals(InputProblem.CORRUPT_BAG, e.problem());
         assertTrue(e.getMessage().contains("remain"), e.getMessage());
@@ -191,6 +287,17 @@ class BadBagInputTest {
             at += 9 + (int) ByteCursor.le64(b, at + 1);
         }
         return at;
+    }
+
+    /** @return t, x, y, z, qw, qx, qy, qz of every pose, one after the other */
+    private static double[] flat(LoadedTrajectory t) {
+        org.trajeval.core.traj.SpatialTrajectory s = t.trajectory().toSpatial();
+        double[] out = new double[8 * s.size()];
+        for (int i = 0; i < s.size(); i++) {
+            double[] v = {s.t(i), s.x(i), s.y(i), s.z(i), s.qw(i), s.qx(i), s.qy(i), s.qz(i)};
+            System.arraycopy(v, 0, out, 8 * i, 8);
+        }
+        return out;
     }
 
     private static int lastIndexOf(byte[] hay, byte[] needle) {

@@ -290,7 +290,9 @@ public final class BagWriters {
             idx.u64(0).str(compression).u64(packed.length).u64(raw.length);
             chunkIndexes.add(recordBytes(0x08, idx));
         }
-        record(f, 0x0F, new Out().u32(0));
+        CRC32 dataCrc = new CRC32(); // the data section CRC: every byte before the Data End, magic included
+        dataCrc.update(f.b.array(), 0, f.b.position());
+        record(f, 0x0F, new Out().u32(dataCrc.getValue()));
         long summaryStart = 0;
         if (summary) {
             summaryStart = f.b.position();
@@ -312,6 +314,23 @@ public final class BagWriters {
         f.u32(crc);
         f.bytes(McapReader.MAGIC);
         return f.toArray();
+    }
+
+    /**
+     * Recomputes the data section CRC of an MCAP written by {@link #mcap} after a test changed
+     * bytes of its data section, so that the test reaches the check it aims at (a chunk CRC, a
+     * chunk size) instead of the data section CRC. Walks the records from the magic to the Data End.
+     */
+    public static byte[] resealDataCrc(byte[] mcap) {
+        ByteBuffer b = ByteBuffer.wrap(mcap).order(ByteOrder.LITTLE_ENDIAN);
+        int at = McapReader.MAGIC.length;
+        while (mcap[at] != 0x0F) {
+            at += 9 + (int) b.getLong(at + 1);
+        }
+        CRC32 crc = new CRC32();
+        crc.update(mcap, 0, at);
+        b.putInt(at + 9, (int) crc.getValue());
+        return mcap;
     }
 
     private static void record(Out f, int op, Out content) {

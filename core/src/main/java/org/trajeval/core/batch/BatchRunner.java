@@ -1,0 +1,114 @@
+package org.trajeval.core.batch;
+
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import java.util.function.Consumer;
+import org.trajeval.core.InputException;
+import org.trajeval.core.eval.EvaluationOptions;
+import org.trajeval.core.eval.Evaluator;
+import org.trajeval.core.eval.Parallelism;
+import org.trajeval.core.io.LoadedTrajectory;
+import org.trajeval.core.io.ReadOptions;
+import org.trajeval.core.io.TrajectoryReader;
+import org.trajeval.core.options.DataKind;
+import org.trajeval.core.options.FileRole;
+import org.trajeval.core.options.FormatApplicability;
+import org.trajeval.core.options.PathResolver;
+import org.trajeval.core.options.SettingValues;
+import org.trajeval.core.options.SettingsResolver;
+import org.trajeval.core.report.EvaluationReport;
+import org.trajeval.core.report.ReportJson;
+
+/**
+ * Scores many pairs in one process: each pair read, evaluated ({@link Evaluator#evaluate}) and its
+ * report written (atomically: temporary file, fsync, rename) into the report folder as
+ * {@code NAME.json}, then forgotten but for its summary row; finally {@link BatchSummary#FILE}.
+ * Pairs are scored one per thread, several at once; a pair that cannot be scored is a failed row
+ * with its reason and the batch goes on.
+ */
+public final class BatchRunner {
+    private BatchRunner() {
+    }
+
+    /**
+     * Scores one pair; bad input (and, caught here as at a top-level handler, any other
+     * exception) becomes a failed row.
+     *
+     * @param base the job's settings, which the row's own settings refine
+     * @param table the table's name, for refusals of the row's settings ({@code pairs.csv:7: ...})
+     * @param reportDir where the report is written as {@code NAME.json}
+     */
+    public static BatchResult score(BatchPair pair, SettingValues base, String table, ReadOptions limits,
+            PathResolver paths, Path reportDir) {
+        try {
+            EvaluationReport report = evaluate(pair, base, table + ":" + pair.line(), limits, paths);
+            String file = pair.reportName() + ".json";
+            try {
+                ReportJson.writeAtomically(reportDir.resolve(file), ReportJson.toJson(report) + "\n");
+            } catch (java.io.UncheckedIOException e) {
+                return BatchResult.failed(pair, BatchResult.WRITE_FAILED, "cannot write " + reportDir.resolve(file)
+                        + ": " + e.getCause().getMessage());
+            }
+            return BatchResult.scored(pair, report, file);
+        } catch (RuntimeException e) { // bad input, or a bug: the row says which, the batch goes on
+            return failed(pair, e);
+        }
+    }
+
+    /**
+     * Reads and scores one pair as {@code trajeval eval} does (the row's settings refine the job's;
+     * settings checked against the formats read), without writing anything: the step a Spark task
+     * runs per row.
+     *
+     * @param settingsSource how refusals of the row's settings name it ({@code pairs.csv:7})
+     * @throws InputException when the pair cannot be scored
+     */
+    public static EvaluationReport evaluate(BatchPair pair, SettingValues base, String settingsSource,
+            ReadOptions limits, PathResolver paths) {
+        SettingValues s = base.with(pair.settings(), settingsSource);
+        LoadedTrajectory ref = TrajectoryReader.read(Path.of(pair.reference()),
+                SettingsResolver.readOptions(s, FileRole.REFERENCE, limits, paths));
+        LoadedTrajectory est = TrajectoryReader.read(Path.of(pair.estimate()),
+                SettingsResolver.readOptions(s, FileRole.ESTIMATE, limits, paths));
+        FormatApplicability.check(s, ref, pair.reference(), est, pair.estimate());
+        EvaluationOptions options = SettingsResolver.evaluationOptions(s,
+                DataKind.of(ref.trajectory(), est.trajectory()));
+        return Evaluator.evaluate(ref, est, options);
+    }
+
+    /**
+     * @return the failed row of a pair whose scoring threw {@code e}: bad input gives its problem as
+     *     the reason, anything else {@link BatchResult#INTERNAL_ERROR} (caught as at a top-level handler)
+     */
+    public static BatchResult failed(BatchPair pair, RuntimeException e) {
+        if (e instanceof java.nio.file.InvalidPathException) {
+            return BatchResult.failed(pair, "unreadable", "not a file path: " + e.getMessage());
+        }
+        if (e instanceof InputException ie) {
+            return BatchResult.failed(pair, ie.problem().name().toLowerCase(Locale.ROOT), ie.getMessage());
+        }
+        return BatchResult.failed(pair, BatchResult.INTERNAL_ERROR, e.getClass().getName()
+                + (e.getMessage() == null ? "" : ": " + e.getMessage()));
+    }
+
+    /**
+     * Scores every pair, {@code parallelism.threads()} pairs at a time (each pair on one thread),
+     * then writes the summary.
+     *
+     * @param done called with each row as it is finished, from the worker threads
+     * @return the rows in table order
+     */
+    public static List<BatchResult> run(List<BatchPair> pairs, SettingValues base, String table, ReadOptions limits,
+            PathResolver paths, Path reportDir, Parallelism parallelism, Consumer<BatchResult> done) {
+        BatchResult[] out = new BatchResult[pairs.size()];
+        parallelism.forEach(out.length, k -> {
+            out[k] = score(pairs.get(k), base, table, limits, paths, reportDir);
+            done.accept(out[k]);
+        });
+        List<BatchResult> rows = Arrays.asList(out);
+        ReportJson.writeAtomically(reportDir.resolve(BatchSummary.FILE), BatchSummary.csv(rows));
+        return rows;
+    }
+}
