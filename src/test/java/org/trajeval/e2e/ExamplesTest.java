@@ -5,41 +5,86 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
+import java.security.MessageDigest;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashMap;
+import java.util.HexFormat;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Properties;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
+import java.util.zip.ZipEntry;
+import java.util.zip.ZipInputStream;
+import javax.xml.parsers.DocumentBuilderFactory;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.trajeval.core.Version;
+import org.w3c.dom.Document;
+import org.w3c.dom.Element;
+import org.w3c.dom.NodeList;
 
 /**
- * The examples of examples/ run as written, as their users run them: the ETL program as a
- * separate Gradle build against the published trajeval-core (build/maven-repo, read as the local
- * Maven repository), the shell example with nothing but the executable jar; their numbers must be
- * trajeval eval's, to the bit.
+ * The examples of examples/ run as written, as their users run them, and the library published
+ * as a user publishes it. One Gradle run of this checkout ({@code :core:publishToMavenLocal
+ * :core:publish}, shared by the tests that need it) publishes trajeval-core into a temporary
+ * local Maven repository ({@code -Dmaven.repo.local}) and over HTTP to a Maven repository this
+ * test serves on 127.0.0.1 ({@link MavenRepositoryServer}); the ETL program is then built as a
+ * separate Gradle build against that local repository, and the shell example runs with nothing
+ * but the executable jar. Their numbers must be trajeval eval's, to the bit.
  */
 class ExamplesTest {
     private static final long BUILD_TIMEOUT_S = 300;
     private static final long RUN_TIMEOUT_S = 120;
+    private static final String USER = "ci";
+    private static final String PASSWORD = "s3cret-" + Long.toHexString(System.nanoTime());
+    // a documentation host (RFC 2606): the test checks that the -P values reach the POM
+    private static final String SCM_URL = "https://git.example.org/robotics/trajeval";
+    private static final String CORE = "org/trajeval/trajeval-core/";
 
     record Result(int code, String out, String err) {
+    }
+
+    /** What the shared Gradle run published: the local repository, the files uploaded over HTTP, the run. */
+    record Publication(Path localRepo, Map<String, byte[]> uploaded, Map<String, Integer> unauthorised, Result gradle) {
+    }
+
+    @TempDir
+    static Path shared;
+
+    private static Publication publication;
+
+    /** Publishes trajeval-core once (see the class comment); @return what was published */
+    private static synchronized Publication publication() throws IOException, InterruptedException {
+        if (publication == null) {
+            Path checkout = required("trajeval.examples").getParent();
+            Path localRepo = Files.createDirectories(shared.resolve("m2-repository"));
+            try (MavenRepositoryServer server = MavenRepositoryServer.start(USER, PASSWORD)) {
+                Result r = run(checkout, Map.of("TRAJEVAL_MAVEN_URL", server.url(), "TRAJEVAL_MAVEN_USERNAME", USER,
+                        "TRAJEVAL_MAVEN_PASSWORD", PASSWORD), BUILD_TIMEOUT_S, "gradle", "--no-daemon", "--offline", "-q",
+                        "-Dmaven.repo.local=" + localRepo, "-Ppom.url=" + SCM_URL, "-Ppom.scm.url=" + SCM_URL,
+                        "-Ppom.scm.connection=scm:git:" + SCM_URL + ".git", ":core:publishToMavenLocal", ":core:publish");
+                publication = new Publication(localRepo, server.files(), server.unauthorised(), r);
+            }
+        }
+        assertEquals(0, publication.gradle().code(), "gradle publishToMavenLocal publish failed:\n"
+                + publication.gradle().out() + publication.gradle().err());
+        return publication;
     }
 
     @Test
     void etlExampleBuiltAgainstThePublishedLibraryWritesTrajevalEvalsReports(@TempDir Path tmp) throws Exception {
         Path examples = required("trajeval.examples");
-        Path repo = required("trajeval.mavenRepo");
+        Path repo = publication().localRepo();
         Path refdata = required("trajeval.refdata");
         Properties props = new Properties();
         try (InputStream in = Files.newInputStream(examples.resolve("etl-java/gradle.properties"))) {
@@ -48,7 +93,7 @@ class ExamplesTest {
         assertEquals(Version.TOOL, props.getProperty("trajevalVersion"),
                 "examples/etl-java/gradle.properties must build against this release");
         assertTrue(Files.isRegularFile(repo.resolve("org/trajeval/trajeval-core/" + Version.TOOL + "/trajeval-core-"
-                + Version.TOOL + ".pom")), "trajeval-core is published in " + repo);
+                + Version.TOOL + ".pom")), "publishToMavenLocal put trajeval-core in -Dmaven.repo.local " + repo);
 
         Path project = copyTree(examples.resolve("etl-java"), tmp.resolve("etl"));
         Result build = run(project, Map.of(), BUILD_TIMEOUT_S, "gradle", "--no-daemon", "--offline", "-q",
@@ -87,6 +132,72 @@ class ExamplesTest {
         assertEquals("refused", refused[1]);
         assertTrue(refused[7].contains("bad.csv:3: column 'yaw'"), refused[7]);
         assertTrue(Files.notExists(out.resolve("broken.json")), "no report for a refused pair");
+    }
+
+    @Test
+    void publishPutsJarPomSourcesJavadocAndChecksumsOnAnHttpMavenRepository() throws Exception {
+        Publication p = publication();
+        assertEquals(Map.of(), p.unauthorised(), "every request carries the credentials from the environment");
+        Map<String, byte[]> up = p.uploaded();
+        String base = CORE + Version.TOOL + "/trajeval-core-" + Version.TOOL;
+        for (String suffix : List.of(".jar", "-sources.jar", "-javadoc.jar", ".pom")) {
+            byte[] file = up.get(base + suffix);
+            assertTrue(file != null && file.length > 0, base + suffix + " uploaded; found " + up.keySet());
+            assertChecksums(up, base + suffix);
+            // the same reproducible bytes as publishToMavenLocal put in the local repository
+            assertTrue(Arrays.equals(Files.readAllBytes(p.localRepo().resolve(base + suffix)), file),
+                    base + suffix + ": the uploaded file equals the local publication's");
+        }
+        String metadata = new String(up.get(CORE + "maven-metadata.xml"), StandardCharsets.UTF_8);
+        assertTrue(metadata.contains("<version>" + Version.TOOL + "</version>"), metadata);
+        assertChecksums(up, CORE + "maven-metadata.xml");
+        assertTrue(entries(up.get(base + "-sources.jar")).contains("org/trajeval/api/TrajectoryEvaluator.java"));
+        assertTrue(entries(up.get(base + "-javadoc.jar")).contains("org/trajeval/api/TrajectoryEvaluator.html"));
+
+        Document pom = DocumentBuilderFactory.newInstance().newDocumentBuilder()
+                .parse(new ByteArrayInputStream(up.get(base + ".pom")));
+        Map<String, String> scopes = new HashMap<>();
+        NodeList deps = pom.getElementsByTagName("dependency");
+        for (int i = 0; i < deps.getLength(); i++) {
+            Element d = (Element) deps.item(i);
+            scopes.put(text(d, "groupId") + ":" + text(d, "artifactId"), text(d, "scope"));
+        }
+        // core's signatures use Jackson (api): compile scope; the libraries behind core (implementation): runtime
+        assertEquals("compile", scopes.get("com.fasterxml.jackson.core:jackson-databind"), scopes.toString());
+        assertEquals("runtime", scopes.get("org.ejml:ejml-ddense"), scopes.toString());
+        assertEquals("runtime", scopes.get("org.apache.commons:commons-math3"), scopes.toString());
+        assertEquals("Apache License, Version 2.0", text(pom.getDocumentElement(), "name", "license"));
+        assertEquals(SCM_URL, text(pom.getDocumentElement(), "url", "scm"));
+    }
+
+    private static void assertChecksums(Map<String, byte[]> up, String path) throws Exception {
+        byte[] file = up.get(path);
+        for (String[] kind : List.of(new String[] {"sha1", "SHA-1"}, new String[] {"md5", "MD5"})) {
+            byte[] sum = up.get(path + "." + kind[0]);
+            assertTrue(sum != null, path + "." + kind[0] + " uploaded");
+            assertEquals(HexFormat.of().formatHex(MessageDigest.getInstance(kind[1]).digest(file)),
+                    new String(sum, StandardCharsets.US_ASCII).trim(), path + "." + kind[0]);
+        }
+    }
+
+    private static List<String> entries(byte[] jar) throws IOException {
+        List<String> names = new ArrayList<>();
+        try (ZipInputStream z = new ZipInputStream(new ByteArrayInputStream(jar))) {
+            for (ZipEntry e = z.getNextEntry(); e != null; e = z.getNextEntry()) {
+                names.add(e.getName());
+            }
+        }
+        return names;
+    }
+
+    /** @return the text of the first {@code tag} element under {@code e} (inside {@code within}, when given), or null */
+    private static String text(Element e, String tag, String... within) {
+        Element scope = e;
+        for (String w : within) {
+            scope = (Element) scope.getElementsByTagName(w).item(0);
+        }
+        NodeList n = scope.getElementsByTagName(tag);
+        return n.getLength() == 0 ? null : n.item(0).getTextContent().trim();
     }
 
     @Test

@@ -35,7 +35,7 @@ import picocli.CommandLine.Option;
         subcommands = {PipelineCommand.Watch.class, PipelineCommand.KafkaCmd.class, PipelineCommand.Send.class,
             PipelineCommand.Tail.class, PipelineCommand.Republish.class, PipelineCommand.ConfigCmd.class},
         exitCodeListHeading = "%nExit codes:%n",
-        exitCodeList = {"0:success (watch --drain: every bundle succeeded)", "1:internal error",
+        exitCodeList = {"0:success (watch --drain: every bundle succeeded); also watch and kafka stopped by SIGTERM/SIGINT", "1:internal error",
             "2:bad configuration or usage", "4:watch --drain: some bundles were put in failed/",
             "5:kafka: no broker answered within --startup-timeout (send, tail: within 60 s)",
             "6:kafka: the broker refused this client (credentials, TLS certificate, permissions)",
@@ -148,7 +148,8 @@ public final class PipelineCommand implements Runnable {
 
     /** {@code watch}: the directory mode. */
     @Command(name = "watch", mixinStandardHelpOptions = true,
-            description = "Processes run bundles dropped in ROOT/incoming/ until stopped (or, with --drain, until none is left).")
+            description = "Processes run bundles dropped in ROOT/incoming/ until stopped (or, with --drain, until none is left). "
+                    + "SIGTERM/SIGINT finishes the runs in hand and exits 0.")
     static final class Watch extends Common implements Callable<Integer> {
         @CommandLine.ParentCommand
         PipelineCommand parent;
@@ -173,6 +174,8 @@ public final class PipelineCommand implements Runnable {
                         new BundleOpener(c.bundleLimits(), c.bagSettings()), metrics, Clock.systemUTC());
                 HttpEndpoint http = c.http().enabled() && !drain
                         ? HttpEndpoint.start(c.http().host(), c.http().port(), metrics::scrape, service::isRunning) : null;
+                // SIGTERM / SIGINT: stop claiming, finish the runs in hand, print the summary, exit
+                // normally (0, or --drain's code). The hook covers the other ways the JVM shuts down.
                 CountDownLatch finished = new CountDownLatch(1);
                 Thread hook = new Thread(() -> {
                     service.stop();
@@ -184,7 +187,7 @@ public final class PipelineCommand implements Runnable {
                 }, "trajeval-shutdown");
                 Runtime.getRuntime().addShutdownHook(hook);
                 DrainSummary s;
-                try {
+                try (StopSignals signals = StopSignals.install(service::stop)) {
                     s = drain ? service.drain() : service.runUntilStopped();
                 } finally {
                     if (http != null) {
@@ -198,7 +201,7 @@ public final class PipelineCommand implements Runnable {
                 try {
                     Runtime.getRuntime().removeShutdownHook(hook);
                 } catch (IllegalStateException shuttingDown) {
-                    // SIGTERM: the hook is running and waits for us
+                    // the JVM is shutting down (not by SIGTERM/SIGINT): the hook is running and waits for us
                 }
                 PrintWriter out = spec.commandLine().getOut();
                 out.printf("reported=%d duplicates=%d failed=%d unfinished=%d%n", s.reported(), s.duplicates(), s.failed(),

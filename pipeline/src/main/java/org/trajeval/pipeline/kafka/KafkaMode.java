@@ -28,6 +28,7 @@ import org.trajeval.pipeline.PipelineConfig;
 import org.trajeval.pipeline.ReportStore;
 import org.trajeval.pipeline.RunProcessor;
 import org.trajeval.pipeline.RunScorer;
+import org.trajeval.pipeline.StopSignals;
 import org.trajeval.pipeline.dir.DirectoryLayout;
 import org.trajeval.pipeline.ledger.Ledger;
 import org.trajeval.pipeline.ledger.LedgerEntry;

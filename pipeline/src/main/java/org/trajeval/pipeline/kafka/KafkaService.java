@@ -37,7 +37,6 @@ import org.apache.kafka.common.errors.AuthorizationException;
 import org.apache.kafka.common.errors.InvalidPidMappingException;
 import org.apache.kafka.common.errors.InvalidProducerEpochException;
 import org.apache.kafka.common.errors.InvalidTxnStateException;
-import org.apache.kafka.common.errors.InvalidTxnTimeoutException;
 import org.apache.kafka.common.errors.OutOfOrderSequenceException;
 import org.apache.kafka.common.errors.ProducerFencedException;
 import org.apache.kafka.common.errors.TimeoutException;
@@ -153,6 +152,8 @@ public final class KafkaService {
      * Consumes until {@link #stop()}.
      *
      * @throws BrokerFailure when the broker refuses this client (credentials, TLS, ACLs)
+     * @throws InputException when {@code kafka.transaction_timeout_ms} is over the broker's
+     *     {@code transaction.max.timeout.ms} (a fatal configuration error: exit code 2)
      */
     public void run() {
         ExecutorService pool = Executors.newFixedThreadPool(settings.workers(), r -> new Thread(r, "trajeval-kafka-worker"));
@@ -214,12 +215,8 @@ public final class KafkaService {
                 throw refused(e);
             } catch (KafkaException | IllegalStateException e) {
                 close(p);
-                for (Throwable t = e; t != null; t = t.getCause()) {
-                    if (t instanceof InvalidTxnTimeoutException) {
-                        throw new IllegalArgumentException("kafka.transaction_timeout_ms (" + settings.transactionTimeoutMs()
-                                + " ms) is longer than the broker " + clients.bootstrapServers() + " allows "
-                                + "(transaction.max.timeout.ms, 15 min by default): lower it");
-                    }
+                if (TransactionTimeoutRefusal.isCause(e)) {
+                    throw TransactionTimeoutRefusal.of(settings.transactionTimeoutMs(), clients, e);
                 }
                 if (attempt == 0) {
                     LOG.warn("producer {} cannot start a transaction yet ({}); retrying", settings.transactionalId(),

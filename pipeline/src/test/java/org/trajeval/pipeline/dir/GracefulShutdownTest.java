@@ -19,8 +19,8 @@ import org.trajeval.pipeline.Fixtures;
 import org.trajeval.pipeline.PipelineCommand;
 
 /**
- * SIGTERM while the service works: in-flight runs finish, nothing is left half-done in
- * processing/, every report written is complete, and the bundles not yet claimed stay in
+ * SIGTERM while the service works: in-flight runs finish, the process exits 0 with its summary
+ * line, nothing is left half-done in processing/, every report written is complete, and the bundles not yet claimed stay in
  * incoming/ for the next start, which reports them.
  */
 class GracefulShutdownTest {
@@ -60,6 +60,8 @@ class GracefulShutdownTest {
         assertTrue(p.isAlive(), "the service must still be running when SIGTERM comes");
         p.destroy(); // SIGTERM
         assertTrue(p.waitFor(60, TimeUnit.SECONDS), "the service must stop after SIGTERM");
+        assertEquals(0, p.exitValue(), () -> "SIGTERM is a normal stop: exit 0\n" + read(root.resolve("child.log")));
+        assertTrue(read(root.resolve("child.log")).contains("reported="), "the summary line is printed on SIGTERM too");
         int reportedAtStop = reports(layout).size();
         assertTrue(reportedAtStop < BUNDLES, "SIGTERM came after all the work: " + reportedAtStop);
         assertEquals(List.of(), list(layout.processing()), "nothing left half-done in processing/");

@@ -1,4 +1,4 @@
-package org.trajeval.pipeline.kafka;
+package org.trajeval.pipeline;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -6,11 +6,12 @@ import sun.misc.Signal;
 import sun.misc.SignalHandler;
 
 /**
- * SIGTERM and SIGINT end the Kafka mode cleanly: they ask the service to stop after its current
- * transaction, and the launcher then exits with 0 (without this, the JVM would exit with 143 or
- * 130 while the service is still committing). The previous handlers come back on {@link #close()}.
+ * SIGTERM and SIGINT end either mode cleanly: they ask the service to stop (the directory mode
+ * after its runs in hand, the Kafka mode after its current transaction), and the launcher then
+ * exits with its normal code, 0 (without this, the JVM would run its shutdown hooks and exit with
+ * 143 or 130). The previous handlers come back on {@link #close()}.
  */
-final class StopSignals implements AutoCloseable {
+public final class StopSignals implements AutoCloseable {
     private final List<Signal> signals = new ArrayList<>();
     private final List<SignalHandler> previous = new ArrayList<>();
 
@@ -18,7 +19,7 @@ final class StopSignals implements AutoCloseable {
     }
 
     /** Installs {@code onStop} for SIGTERM and SIGINT (where the JVM lets us). */
-    static StopSignals install(Runnable onStop) {
+    public static StopSignals install(Runnable onStop) {
         StopSignals s = new StopSignals();
         for (String name : List.of("TERM", "INT")) {
             try {
