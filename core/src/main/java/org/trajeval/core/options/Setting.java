@@ -55,9 +55,10 @@ public enum Setting {
             "Field of a bag message type holding the pose (a geometry_msgs Pose or Transform), for types trajeval "
             + "does not know (it knows PoseStamped, PoseWithCovarianceStamped, TransformStamped, Odometry, Path)."),
     BAG_CRC("bag_crc", "--bag-crc", SettingKind.CHOICE, SettingScope.READ_BOTH, "all|chunks", "", "bag",
-            "Checksums an MCAP bag must pass: all (default: the data section CRC too, one sequential pass over the "
-            + "file) or chunks (the summary and the chunks read only: faster when the bag is much larger than its "
-            + "pose topics). A CRC of 0 is 'not computed' and never compared."),
+            "Checksums an MCAP bag must pass: chunks (default: the summary and every chunk read, so each pose scored "
+            + "is checked and only the wanted channels' chunks are touched) or all (the data section CRC too: one "
+            + "sequential pass over the whole file, for an archive's integrity check). A CRC of 0 is 'not computed' "
+            + "and never compared."),
     CONVENTION("convention", "--convention", SettingKind.CHOICE, SettingScope.EVALUATION, "lesson|evo|kitti", "",
             "all", "Preset of rules (default lesson; evo when a bag topic is given). lesson: interpolated association, crop, se2/se3 alignment "
             + "(se2 for planar data, se3 for SE(3) data), RPE over 1 s for every start pose; evo: nearest within "

@@ -24,9 +24,9 @@ public record BagReadOptions(String topic, StampSource stamps, String poseField,
         Objects.requireNonNull(integrity, "integrity");
     }
 
-    /** Every checksum ({@link BagIntegrity#ALL}). */
+    /** The checksums of the summary and of every chunk read ({@link BagIntegrity#CHUNKS}, the default). */
     public BagReadOptions(String topic, StampSource stamps, String poseField, BagLimits limits) {
-        this(topic, stamps, poseField, limits, BagIntegrity.ALL);
+        this(topic, stamps, poseField, limits, BagIntegrity.CHUNKS);
     }
 
     /** @return header stamps, the type's own pose field, default limits */

@@ -73,7 +73,7 @@ public final class Bags {
      * @throws InputException when the path is not a bag or its structure is broken
      */
     public static BagContainer open(Path path, String source, BagLimits limits) {
-        return open(path, source, limits, BagIntegrity.ALL);
+        return open(path, source, limits, BagIntegrity.CHUNKS);
     }
 
     /**

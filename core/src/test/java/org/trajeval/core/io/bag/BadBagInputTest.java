@@ -51,11 +51,13 @@ class BadBagInputTest {
         return t;
     }
 
+    /** Reads with every checksum (bag_crc: all), the strictest reading, and expects a refusal. */
     private InputException refused(byte[] bytes, String name, String topic) throws IOException {
         Path p = dir.resolve(name);
         Files.write(p, bytes);
         InputException e = assertThrows(InputException.class,
-                () -> BagTrajectoryReader.read(p, BagReadOptions.of(topic), ReadOptions.defaults()));
+                () -> BagTrajectoryReader.read(p, new BagReadOptions(topic, StampSource.HEADER, null,
+                        BagLimits.DEFAULT, BagIntegrity.ALL), ReadOptions.defaults()));
         assertFalse(e.getMessage().contains("\n"), "one line: " + e.getMessage());
         assertTrue(e.getMessage().startsWith(p.toString()), "names the file: " + e.getMessage());
         return e;
@@ -123,7 +125,7 @@ class BadBagInputTest {
     }
 
     @Test
-    void integrityChunksSkipsTheDataSectionPassButStillChecksTheChunksRead() throws IOException {
+    void integrityChunksByDefaultSkipsTheDataSectionPassButStillChecksTheChunksRead() throws IOException {
         // the 40 images logged after the 40 poses: chunks of 5 are pose-only, then image-only
         BagWriters.Topic late = new BagWriters.Topic("/image", "sensor_msgs/msg/Image", "uint8[] data\n");
         for (BagWriters.Pose q : POSES) {
@@ -133,8 +135,7 @@ class BadBagInputTest {
         b[lastIndexOf(b, IMAGE) + 17] ^= 0x01; // in an image chunk: only the data section CRC can see it
         Path p = dir.resolve("chunks.mcap");
         Files.write(p, b);
-        BagReadOptions chunks = new BagReadOptions("/pose", StampSource.HEADER, null, BagLimits.DEFAULT,
-                BagIntegrity.CHUNKS);
+        BagReadOptions chunks = BagReadOptions.of("/pose"); // the default is chunks
         assertEquals(POSES.size(), BagTrajectoryReader.read(p, chunks, ReadOptions.defaults()).trajectory().size());
         assertTrue(refused(b, "chunks-all.mcap", "/pose").getMessage().contains("data section CRC mismatch"));
 
