@@ -79,26 +79,12 @@ public final class Alignment {
             throw new InputException(source, 0, null, InputProblem.TOO_FEW_POSES,
                     model.name().toLowerCase() + " alignment needs at least 2 associated poses, got " + n, null);
         }
-        double mex = 0;
-        double mey = 0;
-        double mez = 0;
-        double mgx = 0;
-        double mgy = 0;
-        double mgz = 0;
-        for (int i = 0; i < n; i++) {
-            mex += est.x(i);
-            mey += est.y(i);
-            mez += est.z(i);
-            mgx += ref.x(i);
-            mgy += ref.y(i);
-            mgz += ref.z(i);
-        }
-        mex /= n;
-        mey /= n;
-        mez /= n;
-        mgx /= n;
-        mgy /= n;
-        mgz /= n;
+        double[] me = est.centroid(n);
+        double[] mg = ref.centroid(n);
+        double mex = me[0];
+        double mey = me[1];
+        double mgx = mg[0];
+        double mgy = mg[1];
         double a = 0;
         double b = 0;
         double ee = 0;
@@ -111,7 +97,7 @@ public final class Alignment {
             b += ex * gy - ey * gx;
             ee += ex * ex + ey * ey;
         }
-        return planarFromSums(model, n, new double[] {mex, mey, mez}, new double[] {mgx, mgy, mgz}, a, b, ee, source);
+        return planarFromSums(model, n, me, mg, a, b, ee, source);
     }
 
     /**

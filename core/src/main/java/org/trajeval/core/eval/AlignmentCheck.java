@@ -115,17 +115,10 @@ final class AlignmentCheck {
      *     O. K. Smith, Comm. ACM 4(4), 1961)
      */
     static double[] principalSpreads(PositionColumns p, int n) {
-        double mx = 0;
-        double my = 0;
-        double mz = 0;
-        for (int i = 0; i < n; i++) {
-            mx += p.x(i);
-            my += p.y(i);
-            mz += p.z(i);
-        }
-        mx /= n;
-        my /= n;
-        mz /= n;
+        double[] m = p.centroid(n);
+        double mx = m[0];
+        double my = m[1];
+        double mz = m[2];
         double a00 = 0;
         double a01 = 0;
         double a02 = 0;
