@@ -141,9 +141,16 @@ public final class ResultsStore implements AutoCloseable {
                 }
                 int[] counts = runs.executeBatch();
                 boolean anyTags = false;
+                List<RunRecord> fresh = new ArrayList<>();
                 for (int i = 0; i < list.size(); i++) {
-                    if (counts[i] > 0 || counts[i] == java.sql.Statement.SUCCESS_NO_INFO) {
-                        inserted += counts[i] > 0 ? counts[i] : 0;
+                    if (counts[i] < 0) {
+                        // both drivers report each row's count (the PostgreSQL driver unless reWriteBatchedInserts
+                        // is on, which the store never sets); without it the trend aggregates could double count
+                        throw new IllegalStateException("the JDBC driver gave no row count for a recorded result");
+                    }
+                    if (counts[i] > 0) {
+                        inserted += counts[i];
+                        fresh.add(list.get(i));
                     }
                     for (Map.Entry<String, String> t : list.get(i).tags().entrySet()) {
                         tags.setString(1, list.get(i).resultSha256());
@@ -156,6 +163,7 @@ public final class ResultsStore implements AutoCloseable {
                 if (anyTags) {
                     tags.executeBatch();
                 }
+                TrendCells.add(connection, fresh);
             }
         }
         connection.commit();
@@ -328,7 +336,9 @@ public final class ResultsStore implements AutoCloseable {
 
     /**
      * Aggregates a metric per slice and bucket over successful runs: count, sum and sum of squares,
-     * so only the cells leave the database.
+     * so only the cells leave the database. A whole-history trend ({@link TrendCells#serves}) sums
+     * the kept aggregates of schema v4; any other is aggregated from the runs
+     * ({@link #trendCellsFromRuns}); both give the same cells.
      *
      * @param metric a metric column
      * @param slice a label column ({@link Selection#COLUMNS}) to slice by
@@ -338,11 +348,26 @@ public final class ResultsStore implements AutoCloseable {
      */
     public synchronized List<TrendCell> trendCells(String metric, String slice, TrendBucket bucket,
             Selection selection, long sinceMs) {
+        requireTrend(metric, slice);
+        if (TrendCells.serves(slice, selection, sinceMs)) {
+            return read("aggregate " + metric + " by " + slice, c -> TrendCells.read(c, metric, slice, bucket,
+                    sinceMs));
+        }
+        return trendCellsFromRuns(metric, slice, bucket, selection, sinceMs);
+    }
+
+    private static void requireTrend(String metric, String slice) {
         StoredMetric.require(metric);
         if (!Selection.COLUMNS.contains(slice)) {
             throw new StoreException(StoreException.Problem.BAD_QUERY, "--by: expected one of robot, site, route, "
                     + "method, version, found \"" + slice + "\"", null);
         }
+    }
+
+    /** {@link #trendCells} aggregated from the runs table, whatever the selection (one grouped query). */
+    synchronized List<TrendCell> trendCellsFromRuns(String metric, String slice, TrendBucket bucket,
+            Selection selection, long sinceMs) {
+        requireTrend(metric, slice);
         String b = bucket.expression();
         StringBuilder sql = new StringBuilder("SELECT r.").append(slice).append(", ").append(b)
                 .append(" AS bucket, COUNT(*), SUM(").append(metric).append("), SUM(").append(metric).append(" * ")
