@@ -18,7 +18,7 @@ import java.util.TreeMap;
  * the first and last recording time of the successful runs. Kept up to date in the transaction that
  * inserts runs ({@link #add}), from the runs that were new, so a re-recorded result adds nothing and
  * concurrent writers each add the runs they inserted. A whole-history trend then reads these cells
- * ({@link #read}): at 10^6 runs over 100 days, about 5 000 rows per (metric, slice) instead of 10^6.
+ * ({@link #fromAggregates}): at 10^6 runs over 100 days, about 5 000 rows per (metric, slice) instead of 10^6.
  *
  * <p>Which trends they serve ({@link #serves}): slices by robot, site, route, method or version,
  * every run (no {@code --where}), since a UTC midnight at or after the epoch. Any other trend is
@@ -181,9 +181,9 @@ final class TrendCells {
     /**
      * The trend cells of one metric and slice column from the aggregates: the day rows summed into
      * the bucket (day; week = day / 7, as {@code recorded_ms / 604 800 000}; version), in the same
-     * labels {@link ResultsStore#trendCells} gives.
+     * labels as {@link #fromRuns}.
      */
-    static List<TrendCell> read(Connection c, String metric, String slice, TrendBucket bucket, long sinceMs)
+    static List<TrendCell> fromAggregates(Connection c, String metric, String slice, TrendBucket bucket, long sinceMs)
             throws SQLException {
         Map<List<String>, Cell> cells = new LinkedHashMap<>();
         try (PreparedStatement s = c.prepareStatement("SELECT day, slice_value, slice_missing, software_version, "
@@ -216,5 +216,33 @@ final class TrendCells {
         cells.forEach((k, v) -> out.add(new TrendCell(k.get(0), k.get(1), v.n, v.sum.value(), v.squares.value(),
                 v.firstMs, v.lastMs)));
         return out;
+    }
+
+    /**
+     * The trend cells aggregated from the runs table, for any selection: one grouped query, so only
+     * the cells leave the database.
+     */
+    static List<TrendCell> fromRuns(Connection c, String metric, String slice, TrendBucket bucket,
+            Selection selection, long sinceMs) throws SQLException {
+        String b = bucket.expression();
+        StringBuilder sql = new StringBuilder("SELECT r.").append(slice).append(", ").append(b)
+                .append(" AS bucket, COUNT(*), SUM(").append(metric).append("), SUM(").append(metric).append(" * ")
+                .append(metric).append("), MIN(r.recorded_ms), MAX(r.recorded_ms) FROM runs r WHERE r.")
+                .append(metric).append(" IS NOT NULL AND r.status = 'ok' AND r.recorded_ms >= ?");
+        List<Object> args = new ArrayList<>();
+        args.add(sinceMs);
+        selection.appendWhere(sql, args);
+        sql.append(" GROUP BY r.").append(slice).append(", ").append(b);
+        try (PreparedStatement s = c.prepareStatement(sql.toString())) {
+            ResultsStore.bindAll(s, args);
+            List<TrendCell> cells = new ArrayList<>();
+            try (ResultSet rs = s.executeQuery()) {
+                while (rs.next()) {
+                    cells.add(new TrendCell(rs.getString(1), rs.getString(2), rs.getLong(3), rs.getDouble(4),
+                            rs.getDouble(5), rs.getLong(6), rs.getLong(7)));
+                }
+            }
+            return cells;
+        }
     }
 }

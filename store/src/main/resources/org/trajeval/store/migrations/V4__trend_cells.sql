@@ -48,3 +48,8 @@ INSERT INTO trend_cells (metric, slice, day, slice_value, slice_missing, softwar
             WHERE r.status = 'ok' AND r.recorded_ms >= 0) k
     WHERE k.x IS NOT NULL
     GROUP BY k.metric, k.slice, k.day, k.v, k.ver;
+-- A gate on one robot between versions (--baseline robot=bot-7,version=2.3): one robot's runs of one
+-- version, instead of every run of the version read from the table to test its robot. SQLite takes it
+-- once it has statistics (ResultsStore runs PRAGMA optimize); without them it keeps runs_by_version_gate,
+-- whose order saves the GROUP BY's sort.
+CREATE INDEX runs_by_robot_version ON runs (robot, software_version);
