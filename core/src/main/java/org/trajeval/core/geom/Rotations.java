@@ -264,7 +264,7 @@ public final class Rotations {
                 b[k] = -b[k];
             }
         }
-        double angle = Math.acos(d);
+        double angle = StrictAcos.acos(d); // Math.acos's bits, without its slow software square root
         if (Math.abs(angle) < EPS4) {
             System.arraycopy(a, 0, out, 0, 4);
             return;
