@@ -111,8 +111,10 @@ def row(case, tag, n, runs):
     best = min(runs, key=lambda r: r["wall"])
     cpu = min(r["cpu"] for r in runs)
     loads = ", ".join(f"{r['load'][0]:.1f}-{r['load'][1]:.1f}" for r in runs)
+    rss = sorted(r["rss"] for r in runs)
+    rss_text = f"{rss[0]:.0f}" + (f" ({', '.join(f'{x:.0f}' for x in rss[1:])})" if len(rss) > 1 else "")
     print(f"| {case} | {tag} | {n} | {best['wall']:.2f} | {n / best['wall']:.1f} | {cpu:.2f} | {cpu * 1000 / n:.1f} | "
-          f"{min(r['rss'] for r in runs):.0f} | {loads} |", flush=True)
+          f"{rss_text} | {loads} |", flush=True)
 
 
 def throughput(a):
@@ -122,7 +124,7 @@ def throughput(a):
                                                         if a.before_pipeline else [])
     print(f"{os.cpu_count()} CPUs; {a.bundles} bundles of {a.poses}-pose 3D TUM pairs, lesson preset; "
           f"minimum of {a.runs} runs; load average (1 min) before-after each run")
-    print("| case | build | runs | min wall (s) | runs/s | min CPU (s) | CPU ms/run | peak RSS (MiB) | load |")
+    print("| case | build | runs | min wall (s) | runs/s | min CPU (s) | CPU ms/run | peak RSS (MiB): min (others) | load |")
     print("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | --- |")
     results = {}
     for k in range(a.runs):
@@ -148,7 +150,7 @@ def throughput(a):
 def backlog(a):
     print(f"{os.cpu_count()} CPUs; backlog drained by trajeval-pipeline watch --drain, {a.poses}-pose 3D pairs; "
           f"minimum of {a.runs} runs; load average (1 min) before-after each run")
-    print("| case | build | runs | min wall (s) | runs/s | min CPU (s) | CPU ms/run | peak RSS (MiB) | load |")
+    print("| case | build | runs | min wall (s) | runs/s | min CPU (s) | CPU ms/run | peak RSS (MiB): min (others) | load |")
     print("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | --- |")
     launchers = [("after", a.pipeline)] + ([("before", a.before_pipeline)] if a.before_pipeline else [])
     peaks = {}
