@@ -54,6 +54,26 @@ public final class RunScorer {
     }
 
     /**
+     * The scorer of a worker: parses the manifest at {@code manifestFile} and checks it is the one the
+     * plan was made from.
+     *
+     * @param engine reader and evaluator
+     * @param manifestFile the manifest, by the path the plan used (a folder every worker sees)
+     * @param sha256 the manifest's SHA-256 when the plan was made ({@link SuitePlan#manifestSha256()})
+     * @return the scorer
+     * @throws InputException when the manifest cannot be read or has changed since the plan was made
+     */
+    public static RunScorer of(RunEngine engine, Path manifestFile, String sha256) {
+        String now = ManifestPaths.sha256(manifestFile);
+        if (!now.equals(sha256)) {
+            throw new InputException(manifestFile.toString(), 0, null, InputProblem.INVALID_CONFIGURATION,
+                    "the manifest changed while the suite ran (SHA-256 " + sha256 + " when planned); rerun the suite",
+                    now);
+        }
+        return new RunScorer(engine, new ManifestParser().read(manifestFile), manifestFile);
+    }
+
+    /**
      * Reads the reference of a sequence with the sequence's settings (the suite's {@code metrics}, then
      * the sequence's), named as the manifest wrote its path.
      *

@@ -66,6 +66,37 @@ public final class SuiteRunner {
             return new Settings(seed, false, 0.95, org.trajeval.core.stats.BootstrapInterval.DEFAULT_RESAMPLES);
         }
 
+        /**
+         * Checks the settings as a command line gives them, naming the options of {@code trajeval suite}.
+         *
+         * @return these settings
+         * @throws InputException on a level outside (0, 1), fewer than 100 or more than 10^6 resamples, a power
+         *     outside (0.5, 1), or a {@code --detect} difference that is zero or not finite
+         */
+        public Settings checked() {
+            if (!(level > 0.0 && level < 1.0)) {
+                throw option("--confidence", "--confidence must be a level between 0 and 1 (exclusive)", level);
+            }
+            if (resamples < 100 || resamples > 1_000_000) {
+                throw option("--resamples", "--resamples must be 100 to 1000000", resamples);
+            }
+            if (!(power > 0.5 && power < 1.0)) {
+                throw option("--power", "--power must be a probability between 0.5 and 1 (exclusive)", power);
+            }
+            for (Map.Entry<String, Double> e : targets.entrySet()) {
+                if (e.getValue() == null || e.getValue() == 0.0 || !Double.isFinite(e.getValue())) {
+                    throw option("--detect", "--detect " + e.getKey() + " must be a finite non-zero difference",
+                            e.getValue());
+                }
+            }
+            return this;
+        }
+
+        private static InputException option(String option, String detail, Object found) {
+            return new InputException(null, 0, option, org.trajeval.core.InputProblem.INVALID_OPTION, detail,
+                    String.valueOf(found));
+        }
+
         /** @return a copy allowing leakage or not */
         public Settings withAllowLeakage(boolean allow) {
             return new Settings(seed, allow, level, resamples, power, targets);
