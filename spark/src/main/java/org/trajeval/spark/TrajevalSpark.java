@@ -21,7 +21,8 @@ import org.trajeval.core.options.SettingsTree;
  * results.write().parquet("results/");
  * }</pre>
  *
- * <p>Input: string columns {@code ref} and {@code est} (a path, or a {@code file:} URI), optional
+ * <p>Input: string columns {@code ref} and {@code est} (a path, or any Hadoop FileSystem URI:
+ * {@code file:}, {@code hdfs:}, {@code s3a:}, ...; see {@link PairFiles}), optional
  * per-row settings columns named as the settings' keys (a non-null cell overrides the job's
  * setting for that row), any other columns. Output: one row per input row, the input's columns
  * unchanged followed by {@link ResultSchema#RESULT}. A pair that cannot be scored (missing file,

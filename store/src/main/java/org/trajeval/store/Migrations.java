@@ -32,7 +32,7 @@ import java.util.TreeMap;
 final class Migrations {
     /** The migrations in order; index i holds version i + 1. */
     static final List<String> FILES = List.of("V1__runs.sql", "V2__site_version_tags.sql",
-            "V3__run_description.sql");
+            "V3__run_description.sql", "V4__trend_cells.sql");
     private static final long ADVISORY_LOCK = 0x7472616a6576616cL; // "trajeval"
 
     private Migrations() {
