@@ -72,12 +72,17 @@ public final class ResultsStore implements AutoCloseable {
                     + ": cannot connect (" + oneLine(e) + ")", e);
         }
         try {
-            Migrations.migrate(c, location.dialect(), clock, location.display());
+            int migrated = Migrations.migrate(c, location.dialect(), clock, location.display());
             ResultsStore store = new ResultsStore(location, c);
             if (location.dialect() == Dialect.SQLITE) {
-                // statistics for every table that has none or whose size changed 25-fold since its last
+                // after a migration, statistics for its new tables and indexes (ANALYZE, each index sampled
+                // at most 1000 rows deep); else for every table whose size changed 25-fold since its last
                 // ANALYZE (SQLite bounds the work): the planner then picks the robot index for a gate on one robot
-                store.sqliteOptimize("PRAGMA optimize=0x10002");
+                if (migrated > 0) {
+                    store.sqliteOptimize("PRAGMA analysis_limit=1000", "ANALYZE");
+                } else {
+                    store.sqliteOptimize("PRAGMA optimize=0x10002");
+                }
             }
             return store;
         } catch (SQLException e) {
@@ -248,10 +253,12 @@ public final class ResultsStore implements AutoCloseable {
     }
 
     /** Runs a statistics pragma; quietly, as statistics only guide the planner (a failing store fails its next call). */
-    private void sqliteOptimize(String pragma) {
+    private void sqliteOptimize(String... pragmas) {
         insertedSinceOptimize = 0;
         try (java.sql.Statement s = connection.createStatement()) {
-            s.execute(pragma);
+            for (String pragma : pragmas) {
+                s.execute(pragma);
+            }
         } catch (SQLException ignored) {
             // the planner keeps the statistics it had
         }

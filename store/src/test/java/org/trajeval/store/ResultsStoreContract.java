@@ -182,12 +182,12 @@ abstract class ResultsStoreContract {
         StoreLocation location = freshLocation();
         try (ResultsStore s = ResultsStore.open(location, CLOCK)) {
             s.record(trendFleet());
-            // make it the store a V3 trajeval left: no trend_cells nor V4's index, V4 not recorded
+            // make it the store a V3 trajeval left: no trend_cells nor V5's index, V4 and V5 not recorded
             s.read("undo V4", c -> {
                 try (java.sql.Statement st = c.createStatement()) {
                     st.execute("DROP TABLE trend_cells");
-                    st.execute("DROP INDEX runs_by_robot_version");
-                    return st.executeUpdate("DELETE FROM trajeval_schema_migrations WHERE version = 4");
+                    st.execute("DROP INDEX runs_by_robot_gate");
+                    return st.executeUpdate("DELETE FROM trajeval_schema_migrations WHERE version >= 4");
                 }
             });
         }

@@ -14,7 +14,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 /** The store contract on the embedded SQLite default, plus what is SQLite's own. */
 class SqliteStoreTest extends ResultsStoreContract {
-    private static final String ROBOT_VERSION = "USING INDEX runs_by_robot_version (robot=? AND software_version=?)";
+    private static final String ROBOT_GATE = "USING COVERING INDEX runs_by_robot_gate (robot=? AND software_version=?)";
     @TempDir
     Path dir;
     private int count;
@@ -96,8 +96,8 @@ class SqliteStoreTest extends ResultsStoreContract {
                     names.add(rs.getString(1));
                 }
                 // runs_by_domain is V3's (still applied: only V2 was undone above)
-                // runs_by_robot_version is V4's
-                assertEquals(java.util.List.of("runs_by_domain", "runs_by_robot", "runs_by_robot_version",
+                // runs_by_robot_gate is V5's
+                assertEquals(java.util.List.of("runs_by_domain", "runs_by_robot", "runs_by_robot_gate",
                         "runs_by_route", "runs_by_site", "runs_by_time", "runs_by_version_gate"), names,
                         "V2's indexes, V1's runs_by_version replaced");
             }
@@ -134,8 +134,8 @@ class SqliteStoreTest extends ResultsStoreContract {
         // 20 robots x 5 versions x 20 runs. Without statistics SQLite prefers the version index (whose order
         // serves the GROUP BY) and then reads every run of the version from the table to test its robot (at
         // 10^6 runs: 10^5 rows, 1.8 s); with the statistics the store's PRAGMA optimize keeps after a large
-        // batch it reads the 20 runs of (robot, version) from V4's index (tried by hand: without the pragma the
-        // plan below names runs_by_version_gate). The plan is checked, not a time.
+        // batch it reads the 20 runs of (robot, version) from V5's index alone (tried by hand: without the pragma
+        // the plan below names runs_by_version_gate). The plan is checked, not a time.
         StoreLocation loc = freshLocation();
         java.util.List<RunRecord> runs = new java.util.ArrayList<>();
         for (int i = 0; i < 2000; i++) {
@@ -150,10 +150,10 @@ class SqliteStoreTest extends ResultsStoreContract {
                 java.util.List<Object> args = new java.util.ArrayList<>();
                 String plan = plan(s, StoredGate.pairedSql(base, cand, pairing, java.util.List.of("ate_trans_rmse_m"),
                         args), args);
-                assertTrue(plan.contains(ROBOT_VERSION) && !plan.contains("runs_by_version_gate"), plan);
+                assertTrue(plan.contains(ROBOT_GATE) && !plan.contains("runs_by_version_gate"), plan);
                 args.clear();
                 plan = plan(s, StoredGate.sideSql(base, pairing, args), args);
-                assertTrue(plan.contains(ROBOT_VERSION) && !plan.contains("runs_by_version_gate"), plan);
+                assertTrue(plan.contains(ROBOT_GATE) && !plan.contains("runs_by_version_gate"), plan);
             }
         }
     }
