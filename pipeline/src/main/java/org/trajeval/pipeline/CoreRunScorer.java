@@ -30,26 +30,35 @@ public final class CoreRunScorer implements RunScorer {
 
     @Override
     public EvaluationReport score(RunJob job) {
-        LoadedTrajectory[] pair = read(job);
-        return Evaluator.evaluate(pair[0], pair[1], SettingsResolver.evaluationOptions(job.settings(),
-                DataKind.of(pair[0].trajectory(), pair[1].trajectory())));
+        return score(job, read(job));
     }
 
     @Override
     public SavedEvaluation scoreWithSeries(RunJob job) {
-        LoadedTrajectory[] pair = read(job);
-        return SavedEvaluation.score(pair[0], pair[1], SettingsResolver.evaluationOptions(job.settings(),
-                DataKind.of(pair[0].trajectory(), pair[1].trajectory())),
-                SettingsResolver.subTrajectoryLengthsM(job.settings()));
+        return scoreWithSeries(job, read(job));
     }
 
-    private LoadedTrajectory[] read(RunJob job) {
+    @Override
+    public RunInputs read(RunJob job) {
         LoadedTrajectory ref = named(TrajectoryReader.read(job.reference(),
                 readOptions(job, FileRole.REFERENCE, maxFileBytes)), job);
         LoadedTrajectory est = named(TrajectoryReader.read(job.estimate(),
                 readOptions(job, FileRole.ESTIMATE, maxFileBytes)), job);
         FormatApplicability.check(job.settings(), ref, ref.source(), est, est.source());
-        return new LoadedTrajectory[] {ref, est};
+        return new RunInputs(ref, est);
+    }
+
+    @Override
+    public EvaluationReport score(RunJob job, RunInputs in) {
+        return Evaluator.evaluate(in.reference(), in.estimate(), SettingsResolver.evaluationOptions(job.settings(),
+                DataKind.of(in.reference().trajectory(), in.estimate().trajectory())));
+    }
+
+    @Override
+    public SavedEvaluation scoreWithSeries(RunJob job, RunInputs in) {
+        return SavedEvaluation.score(in.reference(), in.estimate(), SettingsResolver.evaluationOptions(job.settings(),
+                DataKind.of(in.reference().trajectory(), in.estimate().trajectory())),
+                SettingsResolver.subTrajectoryLengthsM(job.settings()));
     }
 
     /**

@@ -6,7 +6,8 @@ import org.trajeval.core.report.SavedEvaluation;
 import org.trajeval.pipeline.bundle.ContentHash;
 
 /**
- * Turns one {@link RunJob} into a report: fingerprint, skip if already reported, score, file the
+ * Turns one {@link RunJob} into a report: read (each file parsed and hashed in one pass), fingerprint,
+ * skip if already reported, score, file the
  * report. Shared by the directory and the Kafka mode. Thread-safe.
  */
 public final class RunProcessor {
@@ -36,8 +37,12 @@ public final class RunProcessor {
      */
     public RunResult process(RunJob job) {
         ContentHash hash;
+        RunInputs inputs;
         try {
-            hash = ContentHash.of(job);
+            // each file read once: parsed and hashed in one pass (a scorer that does not read ahead: hashed here)
+            inputs = scorer.read(job);
+            hash = inputs == null ? ContentHash.of(job) : ContentHash.of(job, inputs.reference().sha256(),
+                    inputs.estimate().sha256());
         } catch (RuntimeException e) {
             throw new StageException(RunFailure.of(Stage.SCORE, e), e);
         }
@@ -54,10 +59,10 @@ public final class RunProcessor {
         SavedEvaluation saved = null;
         try {
             if (job.plot()) {
-                saved = scorer.scoreWithSeries(job);
+                saved = inputs == null ? scorer.scoreWithSeries(job) : scorer.scoreWithSeries(job, inputs);
                 evaluation = saved.report();
             } else {
-                evaluation = scorer.score(job);
+                evaluation = inputs == null ? scorer.score(job) : scorer.score(job, inputs);
             }
         } catch (RuntimeException e) {
             throw new StageException(RunFailure.of(Stage.SCORE, e), e);

@@ -54,4 +54,23 @@ class CoreRunScorerTest {
         assertEquals("metrics.alignment", e.column());
         assertEquals(InputProblem.INVALID_CONFIGURATION, e.problem());
     }
+
+    @Test
+    void contentHashFromTheReadPassEqualsTheHashOfTheFiles() throws Exception {
+        // a CSV pair and a TUM pair (the two reader paths); ContentHash.of(job) reads the files for the
+        // hashes as every earlier version did, so ledgers written before still recognise their runs
+        Fixtures.writeTrajectory(dir.resolve("gt.csv"), 300, 0.0, 3);
+        Fixtures.writeTrajectory(dir.resolve("est.csv"), 300, 0.05, 4);
+        java.nio.file.Files.writeString(dir.resolve("gt.tum"), "1.0 0 0 0 0 0 0 1\n2.0 1 0 0 0 0 0 1\n3.0 2 1 0 0 0 0 1\n");
+        java.nio.file.Files.writeString(dir.resolve("est.tum"), "1.0 0 0 0 0 0 0 1\n2.0 1 0.1 0 0 0 0 1\n3.0 2 1 0 0 0 0 1\n");
+        CoreRunScorer scorer = new CoreRunScorer(1 << 20);
+        for (String ext : new String[] {"csv", "tum"}) {
+            RunJob job = new RunJob(RunMetadata.ofName("r-" + ext), dir.resolve("gt." + ext), dir.resolve("est." + ext),
+                    SettingValues.DEFAULTS, "test");
+            RunInputs in = scorer.read(job);
+            assertEquals(org.trajeval.pipeline.bundle.ContentHash.of(job), org.trajeval.pipeline.bundle.ContentHash.of(
+                    job, in.reference().sha256(), in.estimate().sha256()), ext);
+            assertEquals(scorer.score(job).ate(), scorer.score(job, in).ate(), ext);
+        }
+    }
 }

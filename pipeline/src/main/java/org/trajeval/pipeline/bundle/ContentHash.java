@@ -24,8 +24,19 @@ public record ContentHash(String reference, String estimate, String content) {
 
     /** @return the fingerprints of a run (reads both files once, streaming) */
     public static ContentHash of(RunJob job) {
-        String ref = ofFile(job.reference());
-        String est = job.estimate().equals(job.reference()) ? ref : ofFile(job.estimate()); // a bag: read once
+        return of(job, null, null);
+    }
+
+    /**
+     * @param referenceSha256 SHA-256 of the reference file's bytes (lower-case hex) taken while it was
+     *     read for scoring, or null to read the file for it here
+     * @param estimateSha256 the same for the estimate file
+     * @return the fingerprints of a run, the same as {@link #of(RunJob)} when the given hashes are the files'
+     */
+    public static ContentHash of(RunJob job, String referenceSha256, String estimateSha256) {
+        String ref = referenceSha256 != null ? referenceSha256 : ofFile(job.reference());
+        String est = estimateSha256 != null ? estimateSha256
+                : job.estimate().equals(job.reference()) ? ref : ofFile(job.estimate()); // a bag: read once
         var m = job.metadata();
         String settings = job.settings().canonical();
         if (job.folder() != null) {

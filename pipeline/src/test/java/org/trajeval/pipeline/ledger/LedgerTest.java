@@ -65,4 +65,26 @@ class LedgerTest {
             assertEquals(1, (int) b.locked(v -> v.latestVersion("r1")));
         }
     }
+
+    @Test
+    void aLookupComparesTheWholeHashReadBackFromTheFile() {
+        // the ledger keeps only a hash code per version in memory: "Aa" and "BB" share String.hashCode (2112),
+        // so finding "BB" must read the "Aa" line back and tell them apart
+        assertEquals("Aa".hashCode(), "BB".hashCode());
+        Path f = dir.resolve("ledger.log");
+        try (Ledger a = Ledger.open(f); Ledger b = Ledger.open(f)) {
+            a.locked(v -> {
+                v.append(new LedgerEntry("r1", "Aa", 1, 10, "first"));
+                v.append(new LedgerEntry("r2", "x", 1, 11, "other"));
+                return null;
+            });
+            for (Ledger l : new Ledger[] {a, b}) { // the appender, and a reader that caught up from the file
+                assertTrue(l.locked(v -> v.find("r1", "BB")).isEmpty());
+                assertEquals(new LedgerEntry("r1", "Aa", 1, 10, "first"), l.locked(v -> v.find("r1", "Aa")).orElseThrow());
+                assertTrue(l.probablyReported("r1", "Aa"));
+                assertEquals(java.util.List.of(new LedgerEntry("r1", "Aa", 1, 10, "first"),
+                        new LedgerEntry("r2", "x", 1, 11, "other")), l.entries());
+            }
+        }
+    }
 }
