@@ -108,20 +108,24 @@ if [ "$cluster" = 1 ]; then
   java $opts -Xmx512m -cp "$home/jars/*" org.apache.spark.deploy.master.Master --host 127.0.0.1 \
     --port "$mport" --webui-port "$(free_port)" > "$work/master.log" 2>&1 & pids+=($!)
   submit() {
+    rm -rf "$work"/events/*
     nice -n 10 java $opts -Xmx1g -cp "$home/jars/*" org.apache.spark.deploy.SparkSubmit \
       --master "spark://127.0.0.1:$mport" --class org.trajeval.spark.SparkJob \
       --conf spark.driver.host=127.0.0.1 --conf spark.driver.bindAddress=127.0.0.1 --conf spark.ui.enabled=false \
       --conf spark.executor.memory=1500m --conf spark.executor.cores=1 \
-      --conf spark.eventLog.enabled=true --conf spark.eventLog.dir="file://$work/events" "$jar" \
+      --conf spark.eventLog.enabled=true --conf spark.eventLog.compress=false \
+      --conf spark.eventLog.dir="file://$work/events" "$jar" \
       score --pairs "$table" --out "$work/out" --partitions 16
   }
   # where the tasks of the newest run ran, from its event log: tasks and busy seconds per executor,
   # and the share of the job's task span during which two tasks ran at once
   where_tasks_ran() {
-    python3 - "$(ls -t "$work"/events/* | head -1)" <<'PY'
+    # submit() empties events/ first; Spark 4 rolls event logs (eventlog_v2_APP/events_N_APP)
+    python3 - $(find "$work/events" -type f \( -name 'events_*' -o -name 'app-*' \) | sort) <<'PY'
 import json, sys
 tasks = []
-for line in open(sys.argv[1]):
+lines = [l for f in sys.argv[1:] for l in open(f)]
+for line in lines:
     e = json.loads(line)
     if e.get("Event") == "SparkListenerTaskEnd":
         i = e["Task Info"]
