@@ -111,8 +111,36 @@ if [ "$cluster" = 1 ]; then
     nice -n 10 java $opts -Xmx1g -cp "$home/jars/*" org.apache.spark.deploy.SparkSubmit \
       --master "spark://127.0.0.1:$mport" --class org.trajeval.spark.SparkJob \
       --conf spark.driver.host=127.0.0.1 --conf spark.driver.bindAddress=127.0.0.1 --conf spark.ui.enabled=false \
-      --conf spark.executor.memory=1500m --conf spark.executor.cores=1 "$jar" \
+      --conf spark.executor.memory=1500m --conf spark.executor.cores=1 \
+      --conf spark.eventLog.enabled=true --conf spark.eventLog.dir="file://$work/events" "$jar" \
       score --pairs "$table" --out "$work/out" --partitions 16
+  }
+  # where the tasks of the newest run ran, from its event log: tasks and busy seconds per executor,
+  # and the share of the job's task span during which two tasks ran at once
+  where_tasks_ran() {
+    python3 - "$(ls -t "$work"/events/* | head -1)" <<'PY'
+import json, sys
+tasks = []
+for line in open(sys.argv[1]):
+    e = json.loads(line)
+    if e.get("Event") == "SparkListenerTaskEnd":
+        i = e["Task Info"]
+        tasks.append((i["Executor ID"], i["Launch Time"] / 1e3, i["Finish Time"] / 1e3))
+if not tasks:
+    sys.exit("no task in the event log")
+per = {}
+for ex, a, b in tasks:
+    n, busy = per.get(ex, (0, 0.0)); per[ex] = (n + 1, busy + b - a)
+start, end = min(t[1] for t in tasks), max(t[2] for t in tasks)
+points = sorted([(a, 1) for _, a, _ in tasks] + [(b, -1) for _, _, b in tasks])
+running, last, both = 0, start, 0.0
+for t, d in points:
+    if running >= 2: both += t - last
+    running += d; last = t
+print("    task span %.1f s; " % (end - start) + "; ".join(
+    "executor %s: %d tasks, %.1f s busy" % (k, n, b) for k, (n, b) in sorted(per.items()))
+    + "; two tasks at once %.0f %% of the span" % (100 * both / (end - start)))
+PY
   }
   add_worker() {
     mkdir -p "$work/worker$1"
@@ -121,13 +149,18 @@ if [ "$cluster" = 1 ]; then
       "spark://127.0.0.1:$mport" > "$work/worker$1.log" 2>&1 & pids+=($!)
     sleep 8
   }
+  mkdir -p "$work/events"
   add_worker 1
   one=$(timed "cluster, 1 worker" submit)
+  where_one=$(where_tasks_ran)
   add_worker 2
   two=$(timed "cluster, 2 workers" submit)
+  where_two=$(where_tasks_ran)
   printf '  standalone, 1 worker     : %8.1f s  %8.1f pairs/s\n' "$one" "$(echo "$pairs / $one" | bc -l)"
+  echo "$where_one"
   printf '  standalone, 2 workers    : %8.1f s  %8.1f pairs/s  (%.2fx one worker)\n' "$two" \
     "$(echo "$pairs / $two" | bc -l)" "$(echo "$one / $two" | bc -l)"
+  echo "$where_two"
 fi
 
 if [ "$big" != 0 ]; then

@@ -7,6 +7,7 @@
 #
 #   bench/speed-3d.sh [--sizes 1000000,10000000] [--runs 3] [--before OTHER/bin/trajeval]
 #                     [--batch 1000] [--data bench/data] [--python python3-with-numpy]
+#                     [--evo bench/.venv/bin] [--evo-runs 1]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 echo "building trajeval (gradle :cli:installDist)" >&2

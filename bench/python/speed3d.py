@@ -65,6 +65,26 @@ def gen(py, d, n, kind):
                         "--seed", "20240605"], check=True)
 
 
+def evo_side_by_side(a, n, mine):
+    """evo_ape tum REF EST -a plus evo_rpe tum REF EST -a --delta 1 --delta_unit f: the options of
+    trajeval's --convention evo --align se3 (nearest association within 0.01 s, SE(3) Umeyama, RPE
+    over one frame); wall and CPU of the two added, peak RSS the larger, against the trajeval row."""
+    ref, est = f"{a.data}/spatial_{n}_ref.tum", f"{a.data}/spatial_{n}_est.tum"
+    ape = [os.path.join(a.evo, "evo_ape"), "tum", ref, est, "-a"]
+    rpe = [os.path.join(a.evo, "evo_rpe"), "tum", ref, est, "-a", "--delta", "1", "--delta_unit", "f"]
+    runs = []
+    for _ in range(a.evo_runs):
+        x, y = timed(ape), timed(rpe)
+        runs.append((x[0] + y[0], x[1] + y[1], max(x[2], y[2]), x[3], y[3]))
+    best = min(runs, key=lambda r: r[0])
+    print(f"| 10^{len(str(n)) - 1} | evo 1.38 | evo_ape -a + evo_rpe -a --delta 1 --delta_unit f | {best[0]:.2f} | "
+          f"{best[1]:.2f} | {best[1] * 1e9 / n:.0f} | {best[2] / 2**20:.0f} | | "
+          f"{', '.join(f'{r[3]:.1f}/{r[4]:.1f}' for r in runs)} |", flush=True)
+    if mine:
+        print(f"| 10^{len(str(n)) - 1} | ratio | evo / trajeval (evo convention, se3) | "
+              f"{best[0] / mine['wall_min_s']:.1f}x | {best[1] / mine['cpu_min_s']:.1f}x | | | | |", flush=True)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--trajeval", required=True)
@@ -74,6 +94,8 @@ def main():
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--data", default="bench/data")
     ap.add_argument("--batch", type=int, default=0, help="pairs of 10^4 3D poses for the eval --batch rows")
+    ap.add_argument("--evo", default=None, help="a bin/ directory with evo_ape and evo_rpe: side by side on the 3D pairs")
+    ap.add_argument("--evo-runs", type=int, default=1, help="runs of evo per size (each takes 1-2 min at 10^6)")
     a = ap.parse_args()
     os.makedirs(a.data, exist_ok=True)
     tools = [("after", a.trajeval)] + ([("before", a.before)] if a.before else [])
@@ -87,6 +109,7 @@ def main():
     for n in [int(float(x)) for x in a.sizes.split(",")]:
         for kind in ("planar", "spatial"):
             gen(a.python, a.data, n, kind)
+        evo_row_cpu = None
         for tag, t in tools:
             for name, cmd in cases(t, a.data, n):
                 runs = [timed(cmd) for _ in range(a.runs)]
@@ -96,9 +119,13 @@ def main():
                        "bytes_per_pose": (min(r[2] for r in runs) - base[(tag, name)]) / n,
                        "load": [r[3] for r in runs]}
                 rows.append(row)
+                if tag == "after" and name.startswith("3D TUM, evo") and name.endswith("se3"):
+                    evo_row_cpu = row
                 print(f"| 10^{len(str(n)) - 1} | {tag} | {name} | {row['wall_min_s']:.2f} | {row['cpu_min_s']:.2f} | "
                       f"{row['cpu_min_s'] * 1e9 / n:.0f} | {row['rss_min_mib']:.0f} | {row['bytes_per_pose']:.0f} | "
                       f"{', '.join(f'{x:.1f}' for x in row['load'])} |", flush=True)
+        if a.evo:
+            evo_side_by_side(a, n, evo_row_cpu)
     if a.batch:
         n = 10000
         gen(a.python, a.data, n, "spatial")

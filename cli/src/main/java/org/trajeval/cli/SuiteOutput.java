@@ -7,13 +7,11 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
-import org.trajeval.core.io.OutputGuard;
 import org.trajeval.core.protocol.RunEngine;
 import org.trajeval.core.protocol.SuiteRunner;
 import org.trajeval.core.report.SuiteReport;
 import org.trajeval.core.report.SuiteReportFiles;
-import org.trajeval.figures.RankDiagramSvg;
-import org.trajeval.figures.SuiteHtml;
+import org.trajeval.figures.SuiteReportFolder;
 import org.trajeval.store.Labels;
 import org.trajeval.store.ReportRecords;
 import org.trajeval.store.ResultsStore;
@@ -29,47 +27,16 @@ final class SuiteOutput {
         if (threads < 1) {
             throw UsageProblem.of("--threads", "--threads must be at least 1", String.valueOf(threads));
         }
-        List<String> written = List.of(SuiteReportFiles.JSON, SuiteReportFiles.RUNS_CSV, SuiteReportFiles.METHODS_CSV,
-                SuiteReportFiles.COMPARISONS_CSV, "report.html");
-        for (String name : written) {
-            OutputGuard.refuseInputs(out.resolve(name), "--out", List.of(manifest));
-        }
-        List<Path> trajectories = inputsOf(manifest);
-        for (String name : written) {
-            OutputGuard.refuseInputs(out.resolve(name), "--out", trajectories);
-        }
+        SuiteReportFolder.refuseToReplaceInputs(manifest, out, "--out");
         ExecutorService pool = Executors.newFixedThreadPool(threads);
         try {
             SuiteRunner.Result result = new SuiteRunner(RunEngine.standard(), pool, ProgressBar.forTerminal(err))
                     .run(manifest, settings);
-            SuiteReportFiles.write(result.report(), out);
-            SuiteHtml.write(result.report(), result.plots(), out);
-            RankDiagramSvg.writeAll(result.report(), out);
+            SuiteReportFolder.write(result, out);
             return result.report();
         } finally {
             pool.shutdownNow();
         }
-    }
-
-    /**
-     * @return the manifest and every trajectory it names (references, and each method's estimate of
-     *     every sequence and seed), resolved against the manifest's folder: no output may replace one
-     */
-    private static List<Path> inputsOf(Path manifest) {
-        org.trajeval.core.protocol.SuiteManifest m = new org.trajeval.core.protocol.ManifestParser().read(manifest);
-        Path base = manifest.toAbsolutePath().getParent();
-        List<Path> inputs = new java.util.ArrayList<>(List.of(manifest));
-        java.util.Set<Long> seeds = new java.util.TreeSet<>(m.seeds());
-        m.methods().forEach(method -> seeds.addAll(method.seeds()));
-        for (org.trajeval.core.protocol.SequenceSpec s : m.sequences()) {
-            inputs.add(base.resolve(s.reference()));
-            for (org.trajeval.core.protocol.MethodSpec method : m.methods()) {
-                for (long seed : seeds) {
-                    inputs.add(base.resolve(method.estimateFor(s.id(), seed)));
-                }
-            }
-        }
-        return inputs;
     }
 
     /** Prints the hygiene warnings, the method table and the score comparisons. */

@@ -3,26 +3,36 @@ package org.trajeval.spark;
 import java.io.IOException;
 import java.io.Serializable;
 import java.net.URI;
-import java.net.URISyntaxException;
 import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.Map;
+import java.util.regex.Pattern;
 import org.apache.hadoop.conf.Configuration;
+import org.apache.hadoop.fs.FileStatus;
 import org.apache.hadoop.fs.FileSystem;
-import org.apache.hadoop.fs.LocalFileSystem;
+import org.apache.hadoop.fs.UnsupportedFileSystemException;
 import org.trajeval.core.InputException;
 import org.trajeval.core.InputProblem;
+import org.trajeval.core.io.InputBytes;
+import org.trajeval.core.io.LoadedTrajectory;
+import org.trajeval.core.io.ReadOptions;
+import org.trajeval.core.io.TrajectoryFiles;
+import org.trajeval.core.io.TrajectoryReader;
 
 /**
- * Where the trajectory named in a pairs table lives, resolved through the Hadoop FileSystem API
- * with the job's Hadoop configuration: a plain path or a {@code file:} URI is a file on the
- * executor's own disk (Hadoop's local file system), read in place by trajeval's readers. Other
- * file systems ({@code hdfs:}, {@code s3a:}, ...) are refused per pair in this version (see the
- * README, "On Spark"): trajeval's readers take a file and read it twice (format, then data).
- * Serializable: the driver's Hadoop settings travel to the executors as text.
+ * Reads the trajectories a pairs table names, through the Hadoop FileSystem API with the job's
+ * Hadoop configuration. A plain path or a {@code file:} URI is a file on the executor's own disk,
+ * read in place by trajeval's readers (bags included). Any other scheme ({@code hdfs:},
+ * {@code s3a:}, {@code abfs:}, {@code gs:}, ...) is streamed once from its file system into memory
+ * ({@link InputBytes}, never copied to a local disk) and read from there with the same numbers and
+ * SHA-256 as the same file on a local disk; its source in reports and messages is the URI as written.
+ * Bags are refused from those schemes (their readers seek in a local file). Serializable: the
+ * driver's Hadoop settings travel to the executors as text.
  */
-final class PairFiles implements Serializable {
+final class PairFiles implements TrajectoryFiles, Serializable {
     private static final long serialVersionUID = 1L;
+    /** A URI scheme of two letters or more (one letter is a Windows drive). */
+    private static final Pattern SCHEME = Pattern.compile("^([A-Za-z][A-Za-z0-9+.-]+):");
 
     private final HashMap<String, String> hadoopSettings;
     private transient Configuration conf;
@@ -37,34 +47,64 @@ final class PairFiles implements Serializable {
     /**
      * @param text the path or URI as written in the table
      * @param column the column it came from (for refusals)
-     * @return the local file
-     * @throws InputException (UNREADABLE) on an empty value, a malformed URI or a file system that is not local
+     * @return the text, when it names a file
+     * @throws InputException (UNREADABLE) on an empty value
      */
-    Path resolve(String text, String column) {
+    static String check(String text, String column) {
         if (text == null || text.isBlank()) {
             throw new InputException(null, 0, column, InputProblem.UNREADABLE,
                     "column '" + column + "' must name a trajectory file (a path or a Hadoop URI), found none", text);
         }
-        URI uri;
+        return text;
+    }
+
+    @Override
+    public LoadedTrajectory read(String text, ReadOptions options) {
+        var m = SCHEME.matcher(text);
+        if (!m.find()) {
+            return TrajectoryFiles.LOCAL.read(text, options); // a plain path
+        }
+        String scheme = m.group(1);
+        org.apache.hadoop.fs.Path path = new org.apache.hadoop.fs.Path(text);
+        if ("file".equalsIgnoreCase(scheme)) {
+            return TrajectoryReader.read(localFile(text, path), options);
+        }
+        InputBytes bytes = InputBytes.read(text, () -> {
+            FileSystem fs = fileSystem(path.toUri(), scheme);
+            FileStatus status = fs.getFileStatus(path); // FileNotFoundException: "the file does not exist"
+            if (status.isDirectory()) {
+                throw new IOException("this is a directory, not a file");
+            }
+            return fs.open(path);
+        }, options.maxBytes());
+        return TrajectoryReader.read(bytes, options);
+    }
+
+    private FileSystem fileSystem(URI uri, String scheme) throws IOException {
         try {
-            uri = new URI(text);
-        } catch (URISyntaxException e) {
-            // a local path with characters a URI does not allow (spaces, ...)
-            return Path.of(text);
+            return FileSystem.get(uri, configuration());
+        } catch (UnsupportedFileSystemException e) {
+            throw notOnClassPath(scheme, e);
+        } catch (RuntimeException e) {
+            // Hadoop's configuration names the class (fs.s3a.impl) but its module is missing
+            if (e.getCause() instanceof ClassNotFoundException) {
+                throw notOnClassPath(scheme, e);
+            }
+            throw e;
         }
-        if (uri.getScheme() == null || uri.getScheme().length() == 1) {
-            return Path.of(text); // a plain path (or a Windows drive letter)
-        }
-        if (!"file".equalsIgnoreCase(uri.getScheme())) {
-            throw new InputException(text, 0, column, InputProblem.UNREADABLE, "file system '" + uri.getScheme()
-                    + "' is not read by this version of trajeval-spark (local paths and file: URIs are); copy the "
-                    + "files to the executors' disks or a mounted folder", uri.getScheme());
-        }
+    }
+
+    private static IOException notOnClassPath(String scheme, Exception e) {
+        return new IOException("no Hadoop FileSystem for scheme '" + scheme + "' on the class path"
+                + ("s3a".equalsIgnoreCase(scheme) ? " (s3a: add hadoop-aws and the AWS SDK bundle, see the README)"
+                        : ""), e);
+    }
+
+    private Path localFile(String text, org.apache.hadoop.fs.Path path) {
         try {
-            LocalFileSystem local = FileSystem.getLocal(configuration());
-            return local.pathToFile(new org.apache.hadoop.fs.Path(uri)).toPath();
-        } catch (IOException e) {
-            throw new InputException(text, 0, column, InputProblem.UNREADABLE, "cannot open the local file system: "
+            return FileSystem.getLocal(configuration()).pathToFile(path).toPath();
+        } catch (IOException | IllegalArgumentException e) {
+            throw new InputException(text, 0, null, InputProblem.UNREADABLE, "not a local file URI: "
                     + e.getMessage(), text, e);
         }
     }

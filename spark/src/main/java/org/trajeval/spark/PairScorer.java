@@ -71,10 +71,10 @@ final class PairScorer implements MapPartitionsFunction<Row, Row>, Serializable 
         BatchPair pair = null;
         try {
             String est = columns.est(in);
-            pair = new BatchPair(0, null, files.resolve(columns.ref(in), PairColumns.REF).toString(),
-                    files.resolve(est, PairColumns.EST).toString(), columns.settings(in), Map.of());
+            pair = new BatchPair(0, null, PairFiles.check(columns.ref(in), PairColumns.REF),
+                    PairFiles.check(est, PairColumns.EST), columns.settings(in), Map.of());
             EvaluationReport r = BatchRunner.evaluate(pair, job, "pair " + est, ReadOptions.defaults(),
-                    PathResolver.asWritten());
+                    PathResolver.asWritten(), files);
             BatchResult row = BatchResult.scored(pair, r, null);
             out[at + 1] = row.status();
             fill(out, at + 4, row, r);

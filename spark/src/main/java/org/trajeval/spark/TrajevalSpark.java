@@ -21,13 +21,17 @@ import org.trajeval.core.options.SettingsTree;
  * results.write().parquet("results/");
  * }</pre>
  *
- * <p>Input: string columns {@code ref} and {@code est} (a path, or a {@code file:} URI), optional
+ * <p>Input: string columns {@code ref} and {@code est} (a path, or any Hadoop FileSystem URI:
+ * {@code file:}, {@code hdfs:}, {@code s3a:}, ...; see {@link PairFiles}), optional
  * per-row settings columns named as the settings' keys (a non-null cell overrides the job's
  * setting for that row), any other columns. Output: one row per input row, the input's columns
  * unchanged followed by {@link ResultSchema#RESULT}. A pair that cannot be scored (missing file,
  * bad content, unknown setting value, no overlap, ...) is a row with status {@code failed}, its
  * error kind and the message; the job does not fail for it. The transformation is lazy and
  * deterministic, so a task that Spark reruns (a lost executor) gives the same rows.
+ *
+ * <p>{@link #suite} runs a benchmark suite with its runs scored on the cluster and the statistics on
+ * the driver: the report of {@code trajeval suite}.
  */
 public final class TrajevalSpark {
     /** How refusals of the job's settings name their source. */
@@ -56,5 +60,29 @@ public final class TrajevalSpark {
         PairColumns columns = PairColumns.of(in, "pairs table");
         PairFiles files = new PairFiles(pairs.sparkSession().sparkContext().hadoopConfiguration());
         return pairs.mapPartitions(new PairScorer(columns, settings, files), Encoders.row(ResultSchema.appendedTo(in)));
+    }
+
+    /**
+     * Runs a benchmark suite: planned on the driver, every (method, sequence, seed) run scored by a
+     * task of the cluster, the statistics on the driver. The report equals {@code trajeval suite}'s
+     * for the same manifest and settings.
+     *
+     * <pre>{@code
+     * SuiteRunner.Result r = TrajevalSpark.suite(spark, Path.of("bench/suite.yaml"), SuiteRunner.Settings.defaults(1));
+     * SuiteReportFiles.write(r.report(), Path.of("report"));
+     * }</pre>
+     *
+     * @param spark the session
+     * @param manifest the suite manifest; its folder (every file it names) must be readable at the same
+     *     path on every executor: local mode, or a shared file system mounted on every worker
+     * @param settings the statistics' settings (seed, level, resamples, power, targets, leakage allowed)
+     * @return the report (what report.json holds) and the plots of the HTML page
+     * @throws InputException on a bad manifest, reference or setting, before any run is scored
+     * @throws org.trajeval.core.protocol.SplitLeakageException on split leakage unless allowed
+     */
+    public static org.trajeval.core.protocol.SuiteRunner.Result suite(org.apache.spark.sql.SparkSession spark,
+            java.nio.file.Path manifest, org.trajeval.core.protocol.SuiteRunner.Settings settings) {
+        Objects.requireNonNull(spark, "spark");
+        return SuiteJob.run(spark, manifest, settings.checked(), null);
     }
 }

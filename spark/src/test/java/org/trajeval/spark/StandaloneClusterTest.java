@@ -9,6 +9,8 @@ import java.io.File;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.net.ServerSocket;
+import java.net.URL;
+import java.net.URLConnection;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -52,13 +54,21 @@ class StandaloneClusterTest {
     void aWorkerKilledWhileTheJobRunsLeavesEachPairExactlyOnceInTheOutput() throws Exception {
         Path home = sparkHome();
         int masterPort = freePort();
+        int masterUi = freePort();
         String master = "spark://127.0.0.1:" + masterPort;
         start(home, "master", List.of("org.apache.spark.deploy.master.Master", "--host", "127.0.0.1",
-                "--port", Integer.toString(masterPort), "--webui-port", Integer.toString(freePort())));
+                "--port", Integer.toString(masterPort), "--webui-port", Integer.toString(masterUi)));
         Path work1 = Files.createDirectories(tmp.resolve("work1"));
         Path work2 = Files.createDirectories(tmp.resolve("work2"));
         Process worker1 = start(home, "worker1", worker(work1, master));
         start(home, "worker2", worker(work2, master));
+        // both workers registered before the job is submitted (the Master's UI JSON), however loaded the machine
+        long registered = System.nanoTime() + TimeUnit.SECONDS.toNanos(JOB_LIMIT_S);
+        while (aliveWorkers(masterUi) < 2) {
+            assertTrue(System.nanoTime() < registered, "two workers registered with the Master within "
+                    + JOB_LIMIT_S + " s: " + Files.readString(tmp.resolve("master.log")));
+            Thread.sleep(200);
+        }
 
         // pairs heavy enough (fr2_desk: 20 957 reference poses) that the job is still running when a worker dies
         Path pairs = tmp.resolve("pairs.csv");
@@ -74,6 +84,9 @@ class StandaloneClusterTest {
                 "--conf", "spark.driver.host=127.0.0.1", "--conf", "spark.driver.bindAddress=127.0.0.1",
                 "--conf", "spark.ui.enabled=false", "--conf", "spark.executor.memory=512m",
                 "--conf", "spark.executor.cores=1", "--conf", "spark.task.maxFailures=8",
+                // no task is scheduled before both executors are up: worker 1 surely gets tasks to lose
+                "--conf", "spark.cores.max=2", "--conf", "spark.scheduler.minRegisteredResourcesRatio=1.0",
+                "--conf", "spark.scheduler.maxRegisteredResourcesWaitingTime=" + JOB_LIMIT_S + "s",
                 System.getProperty("trajeval.submitJar"),
                 "score", "--pairs", pairs.toString(), "--out", out.toString(), "--format", "json",
                 "--partitions", "8", "--convention", "evo", "--align", "sim3"));
@@ -118,6 +131,21 @@ class StandaloneClusterTest {
         return List.of("org.apache.spark.deploy.worker.Worker", "--host", "127.0.0.1", "--port",
                 Integer.toString(freePort()), "--webui-port", Integer.toString(freePort()), "--cores", "1",
                 "--memory", "1g", "--work-dir", workDir.toString(), master);
+    }
+
+    /** @return the number of ALIVE workers the Master's UI JSON lists (0 while the UI is not up) */
+    private static int aliveWorkers(int uiPort) {
+        try {
+            URLConnection c = new URL("http://127.0.0.1:" + uiPort + "/json/").openConnection();
+            c.setConnectTimeout(2000);
+            c.setReadTimeout(5000);
+            try (var in = c.getInputStream()) {
+                JsonNode n = new ObjectMapper().readTree(in);
+                return n.path("aliveworkers").asInt(0);
+            }
+        } catch (IOException e) {
+            return 0; // the Master is still starting
+        }
     }
 
     /** @return whether an executor under the worker's folder has started a task (its log says so) */

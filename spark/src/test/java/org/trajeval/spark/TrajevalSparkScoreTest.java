@@ -134,7 +134,11 @@ class TrajevalSparkScoreTest {
                 "a missing file: eval's message");
         assertEquals(firstLine(eval(rows.get(7)).err), "trajeval: " + byRobot.get("garbage").getAs(ResultSchema.FAILURE_DETAIL),
                 "a garbage file: eval's message");
-        assertEquals("unreadable", byRobot.get("s3a").getAs(ResultSchema.FAILURE_REASON), "a file system not read");
+        assertEquals("unreadable", byRobot.get("s3a").getAs(ResultSchema.FAILURE_REASON),
+                "a file system whose Hadoop module is not on the class path: "
+                        + byRobot.get("s3a").getAs(ResultSchema.FAILURE_DETAIL));
+        String s3a = byRobot.get("s3a").getAs(ResultSchema.FAILURE_DETAIL);
+        assertTrue(s3a.startsWith("s3a://bucket/freiburg1_xyz-rgbdslam.txt: ") && s3a.contains("hadoop-aws"), s3a);
         Row bad = byRobot.get("bad-option");
         assertEquals("invalid_configuration", bad.getAs(ResultSchema.FAILURE_REASON));
         String msg = bad.getAs(ResultSchema.FAILURE_DETAIL);

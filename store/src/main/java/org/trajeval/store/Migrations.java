@@ -32,7 +32,8 @@ import java.util.TreeMap;
 final class Migrations {
     /** The migrations in order; index i holds version i + 1. */
     static final List<String> FILES = List.of("V1__runs.sql", "V2__site_version_tags.sql",
-            "V3__run_description.sql");
+            "V3__run_description.sql", "V4__trend_cells.sql",
+            "V5__robot_gate_index.sql");
     private static final long ADVISORY_LOCK = 0x7472616a6576616cL; // "trajeval"
 
     private Migrations() {
@@ -43,8 +44,12 @@ final class Migrations {
         return FILES.size();
     }
 
-    /** Brings the schema to {@link #latest()}; the connection is left in auto-commit mode. */
-    static void migrate(Connection c, Dialect dialect, Clock clock, String display) throws SQLException {
+    /**
+     * Brings the schema to {@link #latest()}; the connection is left in auto-commit mode.
+     *
+     * @return how many migrations were applied now
+     */
+    static int migrate(Connection c, Dialect dialect, Clock clock, String display) throws SQLException {
         c.setAutoCommit(false);
         try (Statement s = c.createStatement()) {
             if (dialect == Dialect.POSTGRESQL) {
@@ -53,6 +58,7 @@ final class Migrations {
             s.execute("CREATE TABLE IF NOT EXISTS trajeval_schema_migrations (version INTEGER NOT NULL PRIMARY KEY, "
                     + "name TEXT NOT NULL, sha256 CHAR(64) NOT NULL, applied_at TEXT NOT NULL)");
             Map<Integer, String[]> applied = new TreeMap<>();
+            int appliedNow = 0;
             try (ResultSet rs = s.executeQuery("SELECT version, name, sha256 FROM trajeval_schema_migrations")) {
                 while (rs.next()) {
                     applied.put(rs.getInt(1), new String[] {rs.getString(2), rs.getString(3)});
@@ -89,8 +95,10 @@ final class Migrations {
                     p.setString(4, clock.instant().toString());
                     p.executeUpdate();
                 }
+                appliedNow++;
             }
             c.commit();
+            return appliedNow;
         } catch (SQLException | RuntimeException e) {
             c.rollback();
             throw e;

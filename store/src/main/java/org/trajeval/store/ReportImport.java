@@ -79,6 +79,9 @@ public final class ReportImport {
         }
         results += batch.size();
         inserted += store.record(batch);
+        if (inserted >= ResultsStore.OPTIMIZE_EVERY) {
+            store.optimize(); // statistics for the planner after a bulk load
+        }
         return new Summary(files.size(), results, inserted, skipped);
     }
 

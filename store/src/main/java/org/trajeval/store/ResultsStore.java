@@ -34,8 +34,12 @@ public final class ResultsStore implements AutoCloseable {
             + "route, method, software_version, seed, recorded_at, recorded_ms, status, failure_reason, source";
     private static final int LABEL_COUNT = 17;
 
+    /** Runs inserted through one connection after which SQLite's statistics are brought up to date. */
+    static final int OPTIMIZE_EVERY = 1000;
+
     private final StoreLocation location;
     private final Connection connection;
+    private long insertedSinceOptimize;
 
     private ResultsStore(StoreLocation location, Connection connection) {
         this.location = location;
@@ -68,8 +72,19 @@ public final class ResultsStore implements AutoCloseable {
                     + ": cannot connect (" + oneLine(e) + ")", e);
         }
         try {
-            Migrations.migrate(c, location.dialect(), clock, location.display());
-            return new ResultsStore(location, c);
+            int migrated = Migrations.migrate(c, location.dialect(), clock, location.display());
+            ResultsStore store = new ResultsStore(location, c);
+            if (location.dialect() == Dialect.SQLITE) {
+                // after a migration, statistics for its new tables and indexes (ANALYZE, each index sampled
+                // at most 1000 rows deep); else for every table whose size changed 25-fold since its last
+                // ANALYZE (SQLite bounds the work): the planner then picks the robot index for a gate on one robot
+                if (migrated > 0) {
+                    store.sqliteOptimize("PRAGMA analysis_limit=1000", "ANALYZE");
+                } else {
+                    store.sqliteOptimize("PRAGMA optimize=0x10002");
+                }
+            }
+            return store;
         } catch (SQLException e) {
             closeQuietly(c);
             throw new StoreException(StoreException.Problem.UNAVAILABLE, location.display()
@@ -106,7 +121,13 @@ public final class ResultsStore implements AutoCloseable {
         list.sort(java.util.Comparator.comparing(RunRecord::resultSha256));
         for (int attempt = 1;; attempt++) {
             try {
-                return insert(list);
+                int inserted = insert(list);
+                insertedSinceOptimize += inserted;
+                if (insertedSinceOptimize >= OPTIMIZE_EVERY && location.dialect() == Dialect.SQLITE) {
+                    autoCommit();
+                    sqliteOptimize("PRAGMA optimize=0x10002");
+                }
+                return inserted;
             } catch (SQLException e) {
                 rollbackQuietly();
                 String state = e.getSQLState();
@@ -141,9 +162,16 @@ public final class ResultsStore implements AutoCloseable {
                 }
                 int[] counts = runs.executeBatch();
                 boolean anyTags = false;
+                List<RunRecord> fresh = new ArrayList<>();
                 for (int i = 0; i < list.size(); i++) {
-                    if (counts[i] > 0 || counts[i] == java.sql.Statement.SUCCESS_NO_INFO) {
-                        inserted += counts[i] > 0 ? counts[i] : 0;
+                    if (counts[i] < 0) {
+                        // both drivers report each row's count (the PostgreSQL driver unless reWriteBatchedInserts
+                        // is on, which the store never sets); without it the trend aggregates could double count
+                        throw new IllegalStateException("the JDBC driver gave no row count for a recorded result");
+                    }
+                    if (counts[i] > 0) {
+                        inserted += counts[i];
+                        fresh.add(list.get(i));
                     }
                     for (Map.Entry<String, String> t : list.get(i).tags().entrySet()) {
                         tags.setString(1, list.get(i).resultSha256());
@@ -156,6 +184,7 @@ public final class ResultsStore implements AutoCloseable {
                 if (anyTags) {
                     tags.executeBatch();
                 }
+                TrendCells.add(connection, fresh);
             }
         }
         connection.commit();
@@ -199,6 +228,39 @@ public final class ResultsStore implements AutoCloseable {
             } else {
                 s.setDouble(i++, v);
             }
+        }
+    }
+
+    /**
+     * Brings the planner's statistics up to date after a bulk load ({@code db import}): SQLite
+     * {@code PRAGMA optimize} (an ANALYZE where the tables changed, bounded by SQLite), PostgreSQL
+     * {@code VACUUM (ANALYZE)} of the store's tables (statistics, and the visibility map its
+     * index-only scans need; autovacuum would get there later).
+     */
+    public synchronized void optimize() {
+        try (java.sql.Statement s = connection.createStatement()) {
+            if (location.dialect() == Dialect.SQLITE) {
+                s.execute("PRAGMA optimize=0x10002");
+                insertedSinceOptimize = 0;
+                return;
+            }
+            for (String table : List.of("runs", "run_tags", "trend_cells")) {
+                s.execute("VACUUM (ANALYZE) " + table);
+            }
+        } catch (SQLException e) {
+            throw failure("cannot analyse the tables", e);
+        }
+    }
+
+    /** Runs a statistics pragma; quietly, as statistics only guide the planner (a failing store fails its next call). */
+    private void sqliteOptimize(String... pragmas) {
+        insertedSinceOptimize = 0;
+        try (java.sql.Statement s = connection.createStatement()) {
+            for (String pragma : pragmas) {
+                s.execute(pragma);
+            }
+        } catch (SQLException ignored) {
+            // the planner keeps the statistics it had
         }
     }
 
@@ -328,7 +390,9 @@ public final class ResultsStore implements AutoCloseable {
 
     /**
      * Aggregates a metric per slice and bucket over successful runs: count, sum and sum of squares,
-     * so only the cells leave the database.
+     * so only the cells leave the database. A whole-history trend ({@link TrendCells#serves}) sums
+     * the kept aggregates of schema v4; any other is aggregated from the runs
+     * ({@link #trendCellsFromRuns}); both give the same cells.
      *
      * @param metric a metric column
      * @param slice a label column ({@link Selection#COLUMNS}) to slice by
@@ -338,33 +402,28 @@ public final class ResultsStore implements AutoCloseable {
      */
     public synchronized List<TrendCell> trendCells(String metric, String slice, TrendBucket bucket,
             Selection selection, long sinceMs) {
+        requireTrend(metric, slice);
+        if (TrendCells.serves(slice, selection, sinceMs)) {
+            return read("aggregate " + metric + " by " + slice, c -> TrendCells.fromAggregates(c, metric, slice,
+                    bucket, sinceMs));
+        }
+        return trendCellsFromRuns(metric, slice, bucket, selection, sinceMs);
+    }
+
+    private static void requireTrend(String metric, String slice) {
         StoredMetric.require(metric);
         if (!Selection.COLUMNS.contains(slice)) {
             throw new StoreException(StoreException.Problem.BAD_QUERY, "--by: expected one of robot, site, route, "
                     + "method, version, found \"" + slice + "\"", null);
         }
-        String b = bucket.expression();
-        StringBuilder sql = new StringBuilder("SELECT r.").append(slice).append(", ").append(b)
-                .append(" AS bucket, COUNT(*), SUM(").append(metric).append("), SUM(").append(metric).append(" * ")
-                .append(metric).append("), MIN(r.recorded_ms), MAX(r.recorded_ms) FROM runs r WHERE r.")
-                .append(metric).append(" IS NOT NULL AND r.status = 'ok' AND r.recorded_ms >= ?");
-        List<Object> args = new ArrayList<>();
-        args.add(sinceMs);
-        selection.appendWhere(sql, args);
-        sql.append(" GROUP BY r.").append(slice).append(", ").append(b);
-        try (PreparedStatement s = connection.prepareStatement(sql.toString())) {
-            bindAll(s, args);
-            List<TrendCell> cells = new ArrayList<>();
-            try (ResultSet rs = s.executeQuery()) {
-                while (rs.next()) {
-                    cells.add(new TrendCell(rs.getString(1), rs.getString(2), rs.getLong(3), rs.getDouble(4),
-                            rs.getDouble(5), rs.getLong(6), rs.getLong(7)));
-                }
-            }
-            return cells;
-        } catch (SQLException e) {
-            throw failure("cannot aggregate " + metric + " by " + slice, e);
-        }
+    }
+
+    /** {@link #trendCells} aggregated from the runs table, whatever the selection (one grouped query). */
+    synchronized List<TrendCell> trendCellsFromRuns(String metric, String slice, TrendBucket bucket,
+            Selection selection, long sinceMs) {
+        requireTrend(metric, slice);
+        return read("aggregate " + metric + " by " + slice, c -> TrendCells.fromRuns(c, metric, slice, bucket,
+                selection, sinceMs));
     }
 
     /** Work on the store's connection, for read queries kept beside the concept they serve. */
@@ -448,8 +507,16 @@ public final class ResultsStore implements AutoCloseable {
         }
     }
 
+    /** Closes the connection; SQLite first runs {@code PRAGMA optimize}, as its documentation advises. */
     @Override
     public synchronized void close() {
+        if (location.dialect() == Dialect.SQLITE) {
+            try (java.sql.Statement s = connection.createStatement()) {
+                s.execute("PRAGMA optimize");
+            } catch (SQLException ignored) {
+                // statistics are an optimisation: a store closing after a failure closes anyway
+            }
+        }
         closeQuietly(connection);
     }
 }

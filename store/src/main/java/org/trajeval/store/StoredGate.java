@@ -90,15 +90,10 @@ public final class StoredGate {
 
     /** @return per (method, sequence) how many runs the selection takes: one grouped query */
     static List<SideCell> sideCells(ResultsStore store, Selection side, GatePairing pairing) {
-        String method = GatePairing.methodExpression();
-        String seq = pairing.sequenceExpression();
-        StringBuilder sql = new StringBuilder("SELECT ").append(method).append(", ").append(seq)
-                .append(", COUNT(*) FROM runs r WHERE 1 = 1");
         List<Object> args = new ArrayList<>();
-        side.appendWhere(sql, args);
-        sql.append(" GROUP BY ").append(method).append(", ").append(seq);
+        String sql = sideSql(side, pairing, args);
         return store.read("select " + side, c -> {
-            try (PreparedStatement s = c.prepareStatement(sql.toString())) {
+            try (PreparedStatement s = c.prepareStatement(sql)) {
                 ResultsStore.bindAll(s, args);
                 List<SideCell> out = new ArrayList<>();
                 try (ResultSet rs = s.executeQuery()) {
@@ -111,6 +106,17 @@ public final class StoredGate {
         });
     }
 
+    /** @return the SQL of {@link #sideCells}; its values are appended to {@code args} */
+    static String sideSql(Selection side, GatePairing pairing, List<Object> args) {
+        String method = GatePairing.methodExpression();
+        String seq = pairing.sequenceExpression();
+        StringBuilder sql = new StringBuilder("SELECT ").append(method).append(", ").append(seq)
+                .append(", COUNT(*) FROM runs r WHERE 1 = 1");
+        side.appendWhere(sql, args);
+        sql.append(" GROUP BY ").append(method).append(", ").append(seq);
+        return sql.toString();
+    }
+
     /**
      * One query: each side grouped by (method, sequence, seed) with a count and a sum per metric,
      * the two joined on those keys, summed per (method, sequence).
@@ -120,18 +126,9 @@ public final class StoredGate {
     static List<PairedCell> pairedCells(ResultsStore store, Selection baseline, Selection candidate,
             GatePairing pairing, List<String> metrics) {
         List<Object> args = new ArrayList<>();
-        StringBuilder sql = new StringBuilder("SELECT b.method, b.seq");
-        for (int i = 0; i < metrics.size(); i++) {
-            sql.append(", SUM(b.n").append(i).append("), SUM(b.s").append(i).append("), SUM(c.n").append(i)
-                    .append("), SUM(c.s").append(i).append(")");
-        }
-        sql.append(" FROM ");
-        side(sql, args, baseline, pairing, metrics);
-        sql.append(" b JOIN ");
-        side(sql, args, candidate, pairing, metrics);
-        sql.append(" c ON c.method = b.method AND c.seq = b.seq AND c.seed = b.seed GROUP BY b.method, b.seq");
+        String sql = pairedSql(baseline, candidate, pairing, metrics, args);
         return store.read("pair " + baseline + " with " + candidate, c -> {
-            try (PreparedStatement s = c.prepareStatement(sql.toString())) {
+            try (PreparedStatement s = c.prepareStatement(sql)) {
                 ResultsStore.bindAll(s, args);
                 List<PairedCell> out = new ArrayList<>();
                 try (ResultSet rs = s.executeQuery()) {
@@ -147,6 +144,22 @@ public final class StoredGate {
                 return out;
             }
         });
+    }
+
+    /** @return the SQL of {@link #pairedCells}; its values are appended to {@code args} */
+    static String pairedSql(Selection baseline, Selection candidate, GatePairing pairing, List<String> metrics,
+            List<Object> args) {
+        StringBuilder sql = new StringBuilder("SELECT b.method, b.seq");
+        for (int i = 0; i < metrics.size(); i++) {
+            sql.append(", SUM(b.n").append(i).append("), SUM(b.s").append(i).append("), SUM(c.n").append(i)
+                    .append("), SUM(c.s").append(i).append(")");
+        }
+        sql.append(" FROM ");
+        side(sql, args, baseline, pairing, metrics);
+        sql.append(" b JOIN ");
+        side(sql, args, candidate, pairing, metrics);
+        sql.append(" c ON c.method = b.method AND c.seq = b.seq AND c.seed = b.seed GROUP BY b.method, b.seq");
+        return sql.toString();
     }
 
     /**

@@ -83,8 +83,12 @@ public final class Trend {
         }
         boolean higherBetter = StoredMetric.higherIsBetter(metric);
         Map<String, List<TrendCell>> bySlice = new LinkedHashMap<>();
+        // ties in the first recording time are broken by the labels, so the order is the same whichever
+        // way the cells were aggregated (from the runs or from trend_cells)
+        Comparator<String> nullsFirst = Comparator.nullsFirst(Comparator.naturalOrder());
         cells.stream().sorted(Comparator.comparing((TrendCell c) -> c.slice() == null ? "-" : c.slice())
-                .thenComparingLong(TrendCell::firstMs))
+                .thenComparingLong(TrendCell::firstMs).thenComparing(TrendCell::bucket, nullsFirst)
+                .thenComparing(TrendCell::slice, nullsFirst))
                 .forEach(c -> bySlice.computeIfAbsent(c.slice() == null ? "-" : c.slice(), k -> new ArrayList<>())
                         .add(c));
         List<String> names = new ArrayList<>(bySlice.keySet());

@@ -115,7 +115,114 @@ abstract class ResultsStoreContract {
             assertEquals(300, s.count());
             List<RunRecord> back = s.select(Selection.all());
             assertTrue(back.stream().allMatch(r -> r.tags().size() == 1), "every result kept its one tag");
+            // the trend aggregates counted each run once: the same counts and times as the runs table,
+            // sums equal up to their rounding (the values 0.01 i are not exact in binary)
+            List<TrendCell> kept = sorted(s.trendCells("ate_trans_rmse_m", "robot", TrendBucket.DAY, Selection.all(),
+                    0));
+            List<TrendCell> raw = sorted(s.trendCellsFromRuns("ate_trans_rmse_m", "robot", TrendBucket.DAY,
+                    Selection.all(), 0));
+            assertEquals(raw.size(), kept.size());
+            for (int i = 0; i < raw.size(); i++) {
+                assertEquals(raw.get(i).n(), kept.get(i).n());
+                assertEquals(raw.get(i).firstMs(), kept.get(i).firstMs());
+                assertEquals(raw.get(i).lastMs(), kept.get(i).lastMs());
+                assertEquals(raw.get(i).sum(), kept.get(i).sum(), VALUE_TOL);
+                assertEquals(raw.get(i).sumSquares(), kept.get(i).sumSquares(), VALUE_TOL);
+            }
         }
+    }
+
+    /**
+     * Runs with what the trend aggregates must get right, every value a multiple of 1/64 below 4, so
+     * every sum is exact in any order and the two ways of aggregating must agree to the bit: tied
+     * values and tied times, 3 robots over 5 days with day 2 empty for bot-2, runs without robot or
+     * version, failed runs, a non-finite value (stored as NULL), a run before the epoch, two versions.
+     */
+    static List<RunRecord> trendFleet() {
+        Random rnd = new Random(41);
+        List<RunRecord> out = new ArrayList<>();
+        int id = 0;
+        for (int day = 0; day < 5; day++) {
+            for (int k = 0; k < 12; k++) {
+                String robot = k % 4 == 3 ? null : "bot-" + (k % 4);
+                if ("bot-2".equals(robot) && day == 2) {
+                    continue;
+                }
+                String version = k == 5 ? null : day < 3 ? "2.3" : "2.4";
+                boolean ok = k != 7;
+                double ate = rnd.nextInt(256) / 64.0;
+                Map<String, Double> m = !ok ? Map.of("score", 0.0) : k == 9 ? Map.of("ate_trans_rmse_m",
+                        Double.NaN, "score", 60.0) : Map.of("ate_trans_rmse_m", ate, "rpe_trans_rmse_m", ate / 2,
+                        "score", 100 - 8 * ate);
+                long at = day * DAY_MS + (k / 2) * 1000L; // pairs of runs share a time
+                out.add(new RunRecord(ReportRecords.sha256("trend", Integer.toString(id)), "pipeline", "r" + id++,
+                        1, null, null, robot, k % 2 == 0 ? "hall" : "yard", "route-" + (k % 3), k % 2 == 0 ? "orb"
+                        : "vins", version, (long) k, Instant.ofEpochMilli(at), ok, ok ? null : "diverged", m, "test",
+                        Map.of()));
+            }
+        }
+        out.add(Records.run(id, "bot-0", "route-0", "2.3", 1, 1.5, -5000, Map.of()));
+        return out;
+    }
+
+    @Test
+    void trendsFromTheKeptAggregatesEqualTrendsFromTheRuns() throws Exception {
+        List<RunRecord> runs = trendFleet();
+        try (ResultsStore s = ResultsStore.open(freshLocation(), CLOCK)) {
+            // overlapping batches and a full re-recording: each run must count once
+            assertEquals(40, s.record(runs.subList(0, 40)));
+            assertEquals(runs.size() - 40, s.record(runs.subList(20, runs.size())));
+            assertEquals(0, s.record(runs));
+            assertTheAggregatesMatchTheRuns(s);
+        }
+    }
+
+    @Test
+    void upgradingToVersionFourFillsTheAggregatesFromTheStoredRuns() throws Exception {
+        StoreLocation location = freshLocation();
+        try (ResultsStore s = ResultsStore.open(location, CLOCK)) {
+            s.record(trendFleet());
+            // make it the store a V3 trajeval left: no trend_cells nor V5's index, V4 and V5 not recorded
+            s.read("undo V4", c -> {
+                try (java.sql.Statement st = c.createStatement()) {
+                    st.execute("DROP TABLE trend_cells");
+                    st.execute("DROP INDEX runs_by_robot_gate");
+                    return st.executeUpdate("DELETE FROM trajeval_schema_migrations WHERE version >= 4");
+                }
+            });
+        }
+        try (ResultsStore s = ResultsStore.open(location, CLOCK)) {
+            assertTheAggregatesMatchTheRuns(s);
+        }
+    }
+
+    private static void assertTheAggregatesMatchTheRuns(ResultsStore s) {
+        for (String metric : List.of("ate_trans_rmse_m", "rpe_trans_rmse_m", "score", "coverage")) {
+            for (String slice : TrendCells.SLICES) {
+                for (TrendBucket bucket : TrendBucket.values()) {
+                    for (long since : new long[] {0, 3 * DAY_MS}) {
+                        String what = metric + " by " + slice + " per " + bucket + " since " + since;
+                        List<TrendCell> kept = s.trendCells(metric, slice, bucket, Selection.all(), since);
+                        List<TrendCell> raw = s.trendCellsFromRuns(metric, slice, bucket, Selection.all(), since);
+                        assertEquals(sorted(raw), sorted(kept), what);
+                        assertEquals(Trend.analyse(raw, metric, slice, bucket, 0.95), Trend.analyse(kept, metric, slice,
+                                bucket, 0.95), what);
+                    }
+                }
+            }
+        }
+        // by hand: bot-2 has no day-2 cell (it ran no run that day), and the run before the epoch is in no cell
+        List<TrendCell> bot2 = s.trendCells("ate_trans_rmse_m", "robot", TrendBucket.DAY, Selection.all(), 0)
+                .stream().filter(c -> "bot-2".equals(c.slice())).map(c -> c).toList();
+        assertEquals(List.of("0", "1", "3", "4"), bot2.stream().map(TrendCell::bucket).sorted().toList());
+        assertTrue(s.trendCells("ate_trans_rmse_m", "robot", TrendBucket.DAY, Selection.all(), 0).stream()
+                .allMatch(c -> c.firstMs() >= 0));
+    }
+
+    private static List<TrendCell> sorted(List<TrendCell> cells) {
+        java.util.Comparator<String> nullsFirst = java.util.Comparator.nullsFirst(java.util.Comparator.naturalOrder());
+        return cells.stream().sorted(java.util.Comparator.comparing(TrendCell::slice, nullsFirst)
+                .thenComparing(TrendCell::bucket, nullsFirst)).toList();
     }
 
     @Test

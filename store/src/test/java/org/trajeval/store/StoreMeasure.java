@@ -18,7 +18,9 @@ import org.trajeval.core.protocol.RegressionGate;
  * (FILE: a SQLite store kept after the run and reused, unfilled, when it already holds RUNS runs).
  * Fills a fresh store with RUNS synthetic run results (50 robots, 5 sites, 20 routes, 3 methods,
  * 10 software versions over 100 days, seeds 1-5; one tag each), then times the trend queries and
- * the gate (pairing and per-sequence sums in SQL, then the paired statistics): 7 repetitions, median and max.
+ * the gate (pairing and per-sequence sums in SQL, then the paired statistics): 7 repetitions, wall time
+ * min, median and max and the minimum CPU time of the querying thread, with the load average before
+ * and after. {@code bench/store-measure.sh} runs both databases.
  */
 public final class StoreMeasure {
     private StoreMeasure() {
@@ -39,6 +41,8 @@ public final class StoreMeasure {
         try (ResultsStore s = ResultsStore.open(loc, Clock.systemUTC())) {
             if (s.count() != runs) {
                 fill(s, runs, dialect, loc);
+            } else {
+                System.out.printf(Locale.ROOT, "%s: reusing %s (%d runs)%n", dialect, loc.display(), runs);
             }
             long start = Instant.parse("2026-08-01T00:00:00Z").toEpochMilli();
             long span = 100L * 86_400_000L;
@@ -81,9 +85,14 @@ public final class StoreMeasure {
                         ? String.format(Locale.ROOT, "; file %.0f MB", Files.size(Path.of(loc.jdbcUrl()
                                 .substring("jdbc:sqlite:".length()))) / 1e6)
                         : "");
+        long a0 = System.nanoTime();
+        s.optimize(); // what db import does after a bulk load
+        System.out.printf(Locale.ROOT, "%s: statistics after the load (optimize) %.1f s%n", dialect,
+                (System.nanoTime() - a0) / 1e9);
     }
 
     private static void measureQueries(ResultsStore s, long start, long span) {
+        System.out.println("load average before the queries (1, 5, 15 min): " + load());
         time("trend ate by robot per day (all runs)", () -> Trend.of(s, "ate_trans_rmse_m", "robot",
                 TrendBucket.DAY, Selection.all(), 0, 0.95).slices().size());
         time("trend ate by route per version", () -> Trend.of(s, "ate_trans_rmse_m", "route",
@@ -100,6 +109,17 @@ public final class StoreMeasure {
                     List.of("ate_trans_rmse_m", "rpe_trans_rmse_m")).size();
         });
         time("gate v8 vs v9 on robot bot-7 only", () -> gate(s, "v8,robot=bot-7", "v9,robot=bot-7"));
+        System.out.println("load average after the queries (1, 5, 15 min): " + load());
+    }
+
+    /** @return the machine's load averages, {@code /proc/loadavg}'s first three fields */
+    private static String load() {
+        try {
+            String[] f = Files.readString(Path.of("/proc/loadavg")).split(" ");
+            return f[0] + " " + f[1] + " " + f[2];
+        } catch (java.io.IOException e) {
+            return "unknown";
+        }
     }
 
     private static int gate(ResultsStore s, String base, String cand) {

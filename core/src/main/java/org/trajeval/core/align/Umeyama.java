@@ -24,18 +24,23 @@ final class Umeyama {
      * @return {R (9, row-major), t (3), {c}} or {@code null} when the covariance has rank < 2
      */
     static double[][] fit(PositionColumns x, PositionColumns y, int n, boolean withScale) {
-        double[] mx = new double[3];
-        double[] my = new double[3];
-        for (int d = 0; d < 3; d++) {
-            double sx = 0;
-            double sy = 0;
-            for (int i = 0; i < n; i++) {
-                sx += coordinate(x, d, i);
-                sy += coordinate(y, d, i);
-            }
-            mx[d] = sx / n;
-            my[d] = sy / n;
+        // the means: one pass, each coordinate summed in index order (as three passes would)
+        double sx0 = 0;
+        double sx1 = 0;
+        double sx2 = 0;
+        double sy0 = 0;
+        double sy1 = 0;
+        double sy2 = 0;
+        for (int i = 0; i < n; i++) {
+            sx0 += x.x(i);
+            sx1 += x.y(i);
+            sx2 += x.z(i);
+            sy0 += y.x(i);
+            sy1 += y.y(i);
+            sy2 += y.z(i);
         }
+        double[] mx = {sx0 / n, sx1 / n, sx2 / n};
+        double[] my = {sy0 / n, sy1 / n, sy2 / n};
         double sigmaX = 0;
         double[] cov = new double[9];
         for (int i = 0; i < n; i++) {
@@ -43,12 +48,18 @@ final class Umeyama {
             double ex1 = x.y(i) - mx[1];
             double ex2 = x.z(i) - mx[2];
             sigmaX += ex0 * ex0 + ex1 * ex1 + ex2 * ex2;
-            double[] ey = {y.x(i) - my[0], y.y(i) - my[1], y.z(i) - my[2]};
-            for (int r = 0; r < 3; r++) {
-                cov[3 * r] += ey[r] * ex0;
-                cov[3 * r + 1] += ey[r] * ex1;
-                cov[3 * r + 2] += ey[r] * ex2;
-            }
+            double ey0 = y.x(i) - my[0];
+            double ey1 = y.y(i) - my[1];
+            double ey2 = y.z(i) - my[2];
+            cov[0] += ey0 * ex0;
+            cov[1] += ey0 * ex1;
+            cov[2] += ey0 * ex2;
+            cov[3] += ey1 * ex0;
+            cov[4] += ey1 * ex1;
+            cov[5] += ey1 * ex2;
+            cov[6] += ey2 * ex0;
+            cov[7] += ey2 * ex1;
+            cov[8] += ey2 * ex2;
         }
         sigmaX /= n;
         for (int k = 0; k < 9; k++) {
@@ -100,9 +111,5 @@ final class Umeyama {
             t[r] = my[r] - scale * (rot[3 * r] * mx[0] + rot[3 * r + 1] * mx[1] + rot[3 * r + 2] * mx[2]);
         }
         return new double[][] {rot, t, {scale}};
-    }
-
-    private static double coordinate(PositionColumns p, int d, int i) {
-        return d == 0 ? p.x(i) : d == 1 ? p.y(i) : p.z(i);
     }
 }

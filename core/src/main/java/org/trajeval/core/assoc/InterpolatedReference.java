@@ -112,7 +112,6 @@ public final class InterpolatedReference implements PositionColumns {
         int nr = ref.size();
         double[] q0 = new double[4];
         double[] q1 = new double[4];
-        double[] qk = new double[4];
         int idx = ref.firstAtOrAfter(stamp.applyAsDouble(from), 0, nr);
         for (int k = from; k < to; k++) {
             double t = stamp.applyAsDouble(k);
@@ -129,8 +128,7 @@ public final class InterpolatedReference implements PositionColumns {
             z[k] = ref.z(seg - 1) + f * (ref.z(seg) - ref.z(seg - 1));
             ref.quaternion(seg - 1, q0);
             ref.quaternion(seg, q1);
-            Rotations.slerp(q0, q1, f, qk);
-            System.arraycopy(qk, 0, q, 4 * k, 4);
+            Rotations.slerp(q0, q1, f, q, 4 * k);
         }
     }
 

@@ -11,7 +11,7 @@ import org.trajeval.core.eval.Evaluator;
 import org.trajeval.core.eval.Parallelism;
 import org.trajeval.core.io.LoadedTrajectory;
 import org.trajeval.core.io.ReadOptions;
-import org.trajeval.core.io.TrajectoryReader;
+import org.trajeval.core.io.TrajectoryFiles;
 import org.trajeval.core.options.DataKind;
 import org.trajeval.core.options.FileRole;
 import org.trajeval.core.options.FormatApplicability;
@@ -67,10 +67,19 @@ public final class BatchRunner {
      */
     public static EvaluationReport evaluate(BatchPair pair, SettingValues base, String settingsSource,
             ReadOptions limits, PathResolver paths) {
+        return evaluate(pair, base, settingsSource, limits, paths, TrajectoryFiles.LOCAL);
+    }
+
+    /**
+     * As {@link #evaluate(BatchPair, SettingValues, String, ReadOptions, PathResolver)}, the files
+     * read by {@code files} (e.g. through Hadoop's FileSystem API for {@code hdfs:} pairs).
+     */
+    public static EvaluationReport evaluate(BatchPair pair, SettingValues base, String settingsSource,
+            ReadOptions limits, PathResolver paths, TrajectoryFiles files) {
         SettingValues s = base.with(pair.settings(), settingsSource);
-        LoadedTrajectory ref = TrajectoryReader.read(Path.of(pair.reference()),
+        LoadedTrajectory ref = files.read(pair.reference(),
                 SettingsResolver.readOptions(s, FileRole.REFERENCE, limits, paths));
-        LoadedTrajectory est = TrajectoryReader.read(Path.of(pair.estimate()),
+        LoadedTrajectory est = files.read(pair.estimate(),
                 SettingsResolver.readOptions(s, FileRole.ESTIMATE, limits, paths));
         FormatApplicability.check(s, ref, pair.reference(), est, pair.estimate());
         EvaluationOptions options = SettingsResolver.evaluationOptions(s,

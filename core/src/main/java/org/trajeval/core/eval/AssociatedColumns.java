@@ -119,6 +119,8 @@ final class AssociatedColumns implements PosePairs {
         final double[] q = new double[12];
         final double[] p = new double[12];
         final double[] e = new double[12];
+        /** Scratch of {@link Rotations#angle(double[], int, double[])}. */
+        final double[] quat = new double[4];
         /** Translation error of the last pose or pair computed (m). */
         double transError;
         /** Rotation error of the last pose or pair computed (rad). */
@@ -170,7 +172,7 @@ final class AssociatedColumns implements PosePairs {
                 e[3 * r + c] = re[r] * rr[c] + re[3 + r] * rr[3 + c] + re[6 + r] * rr[6 + c];
             }
         }
-        s.rotError = Rotations.angle(e, 0);
+        s.rotError = Rotations.angle(e, 0, s.quat);
     }
 
     /**
@@ -190,7 +192,7 @@ final class AssociatedColumns implements PosePairs {
         double[] e = s.e;
         RelativeMotion.inverseTimes(q, q[9], q[10], q[11], p, p[9], p[10], p[11], e);
         s.transError = Math.sqrt(e[9] * e[9] + e[10] * e[10] + e[11] * e[11]);
-        s.rotError = Rotations.angle(e, 0);
+        s.rotError = Rotations.angle(e, 0, s.quat);
     }
 
     /** @return the length of the associated reference path from pose k to k + 1 (m) */

@@ -3,7 +3,6 @@ package org.trajeval.core.io;
 import java.io.Closeable;
 import java.io.IOException;
 import java.io.InputStream;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
@@ -50,11 +49,16 @@ final class ByteLines implements Closeable {
 
     /** Opens a file; refuses a missing or unreadable one as {@link InputProblem#UNREADABLE}. */
     static ByteLines open(Path path, String source, long maxBytes) {
+        return open(ByteSource.of(path), source, maxBytes);
+    }
+
+    /** Opens a file wherever it is; refuses a missing or unreadable one as {@link InputProblem#UNREADABLE}. */
+    static ByteLines open(ByteSource file, String source, long maxBytes) {
         try {
-            long size = Files.isRegularFile(path) ? Files.size(path) : 0;
-            ByteLines lines = new ByteLines(source, Files.newInputStream(path), maxBytes, size);
+            long size = file.size();
+            ByteLines lines = new ByteLines(source, file.open(), maxBytes, size);
             if (size > SAMPLES * SAMPLE_BYTES) {
-                lines.sampledBytesPerLine = sampleLineLength(path, size);
+                lines.sampledBytesPerLine = sampleLineLength(file, size);
             }
             return lines;
         } catch (IOException | SecurityException e) {
@@ -73,15 +77,15 @@ final class ByteLines implements Closeable {
      *     {@link #SAMPLE_BYTES} spread evenly over the file, NaN if it cannot be told; numbers
      *     often grow along a file, so its first lines alone would misjudge the pose count
      */
-    private static double sampleLineLength(Path path, long size) {
+    private static double sampleLineLength(ByteSource file, long size) {
         java.nio.ByteBuffer buf = java.nio.ByteBuffer.allocate(SAMPLE_BYTES);
         long spanned = 0;
         long lines = 0;
-        try (java.nio.channels.FileChannel ch = java.nio.channels.FileChannel.open(path)) {
+        try {
             for (int k = 0; k < SAMPLES; k++) {
                 buf.clear();
                 long at = (size - SAMPLE_BYTES) * k / (SAMPLES - 1);
-                while (buf.hasRemaining() && ch.read(buf, at + buf.position()) > 0) {
+                while (buf.hasRemaining() && file.readAt(at + buf.position(), buf) > 0) {
                     // a regular file fills the buffer in one or two reads
                 }
                 byte[] b = buf.array();

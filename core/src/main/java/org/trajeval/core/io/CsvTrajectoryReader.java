@@ -1,6 +1,5 @@
 package org.trajeval.core.io;
 
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.trajeval.core.InputException;
@@ -21,22 +20,22 @@ final class CsvTrajectoryReader {
     private CsvTrajectoryReader() {
     }
 
-    static LoadedTrajectory read(Path path, String source, ReadOptions options, String reason) {
+    static LoadedTrajectory read(ByteSource file, String source, ReadOptions options, String reason) {
         CsvLayout layout = options.csv();
         if (layout.delimiter() > 127) {
-            return QuotedCsvReader.read(path, source, options, reason);
+            return QuotedCsvReader.read(file, source, options, reason);
         }
         try {
-            return readPlain(path, source, options, reason);
+            return readPlain(file, source, options, reason);
         } catch (NeedsQuotedCsv quoted) {
-            return QuotedCsvReader.read(path, source, options, reason);
+            return QuotedCsvReader.read(file, source, options, reason);
         }
     }
 
     /** The fast path: throws {@link NeedsQuotedCsv} at the first quote character. */
-    static LoadedTrajectory readPlain(Path path, String source, ReadOptions options, String reason) {
+    static LoadedTrajectory readPlain(ByteSource file, String source, ReadOptions options, String reason) {
         CsvLayout layout = options.csv();
-        try (ByteLines lines = ByteLines.open(path, source, options.maxBytes())) {
+        try (ByteLines lines = ByteLines.open(file, source, options.maxBytes())) {
             NumericRows rows = new NumericRows(lines, source, (byte) layout.delimiter(), true);
             if (!rows.nextContentLine()) {
                 throw FileProblems.empty(source, "it has not even a header line (expected "

@@ -1,6 +1,5 @@
 package org.trajeval.core.io;
 
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.trajeval.core.InputException;
@@ -51,9 +50,9 @@ final class EulerPoseReader {
         };
     }
 
-    static LoadedTrajectory read(Path path, String source, ReadOptions options, String reason, TrajectoryFormat f) {
+    static LoadedTrajectory read(ByteSource file, String source, ReadOptions options, String reason, TrajectoryFormat f) {
         Layout l = layout(f);
-        try (ByteLines lines = ByteLines.open(path, source, options.maxBytes())) {
+        try (ByteLines lines = ByteLines.open(file, source, options.maxBytes())) {
             NumericRows rows = new NumericRows(lines, source, (byte) ',', false);
             int[] fields = l.fields();
             if (l.header() != null) {

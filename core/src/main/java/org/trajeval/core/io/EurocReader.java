@@ -1,6 +1,5 @@
 package org.trajeval.core.io;
 
-import java.nio.file.Path;
 import org.trajeval.core.InputException;
 import org.trajeval.core.InputProblem;
 import org.trajeval.core.traj.SpatialTrajectory;
@@ -19,8 +18,8 @@ final class EurocReader {
     private EurocReader() {
     }
 
-    static LoadedTrajectory read(Path path, String source, ReadOptions options, String reason) {
-        try (ByteLines lines = ByteLines.open(path, source, options.maxBytes())) {
+    static LoadedTrajectory read(ByteSource file, String source, ReadOptions options, String reason) {
+        try (ByteLines lines = ByteLines.open(file, source, options.maxBytes())) {
             NumericRows rows = new NumericRows(lines, source, (byte) ',', false);
             rows.select(new int[] {0, 1, 2, 3, 4, 5, 6, 7}, NAMES, UNITS);
             rows.requireAtLeastFields(8, "timestamp [ns], p_x, p_y, p_z [m], q_w, q_x, q_y, q_z, ...");

@@ -18,7 +18,7 @@ final class FileProblems {
 
     static InputException unreadable(String source, Exception e) {
         String why;
-        if (e instanceof NoSuchFileException) {
+        if (e instanceof NoSuchFileException || e instanceof java.io.FileNotFoundException) {
             why = "the file does not exist";
         } else if (e instanceof AccessDeniedException || e instanceof SecurityException) {
             why = "the file may not be read (permission denied)";

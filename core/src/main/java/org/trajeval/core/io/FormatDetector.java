@@ -3,8 +3,6 @@ package org.trajeval.core.io;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -40,11 +38,11 @@ final class FormatDetector {
     private FormatDetector() {
     }
 
-    static Detection detect(Path path, String source, CsvLayout layout) {
+    static Detection detect(ByteSource file, String source, CsvLayout layout) {
         byte[] head = new byte[HEAD_BYTES];
         int n = 0;
         boolean complete;
-        try (InputStream in = Files.newInputStream(path)) {
+        try (InputStream in = file.open()) {
             int r;
             while (n < head.length && (r = in.read(head, n, head.length - n)) > 0) {
                 n += r;
@@ -61,7 +59,7 @@ final class FormatDetector {
         if (!complete && lines.size() > 1) {
             lines.remove(lines.size() - 1); // a partial line
         }
-        String name = path.getFileName() == null ? "" : path.getFileName().toString().toLowerCase(Locale.ROOT);
+        String name = file.fileName().toLowerCase(Locale.ROOT);
         String ext = name.lastIndexOf('.') >= 0 ? name.substring(name.lastIndexOf('.') + 1) : "";
 
         String firstNonBlank = null;

@@ -1,6 +1,5 @@
 package org.trajeval.core.io;
 
-import java.nio.file.Path;
 import org.trajeval.core.InputException;
 import org.trajeval.core.InputProblem;
 
@@ -14,8 +13,8 @@ final class IclNuimReader {
     private IclNuimReader() {
     }
 
-    static LoadedTrajectory read(Path path, String source, ReadOptions options, String reason) {
-        LoadedTrajectory tum = TumReader.read(path, source, options, reason);
+    static LoadedTrajectory read(ByteSource file, String source, ReadOptions options, String reason) {
+        LoadedTrajectory tum = TumReader.read(file, source, options, reason);
         var t = tum.trajectory();
         for (int i = 0; i < t.size(); i++) {
             if (t.t(i) != Math.rint(t.t(i)) || t.t(i) < 0) {

@@ -26,10 +26,10 @@ final class KittiReader {
     private KittiReader() {
     }
 
-    static LoadedTrajectory read(Path path, String source, ReadOptions options, String reason) {
+    static LoadedTrajectory read(ByteSource file, String source, ReadOptions options, String reason) {
         double[][] c;
         String sha;
-        try (ByteLines lines = ByteLines.open(path, source, options.maxBytes())) {
+        try (ByteLines lines = ByteLines.open(file, source, options.maxBytes())) {
             NumericRows rows = new NumericRows(lines, source, NumericRows.WHITESPACE, false);
             rows.select(new int[] {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}, NAMES, UNITS);
             rows.requireFields(12, "r11 r12 r13 tx r21 r22 r23 ty r31 r32 r33 tz, separated by spaces");

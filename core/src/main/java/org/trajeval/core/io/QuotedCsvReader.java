@@ -7,8 +7,6 @@ import java.io.OutputStream;
 import java.io.Reader;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.security.DigestInputStream;
 import java.security.MessageDigest;
 import java.util.ArrayList;
@@ -32,7 +30,7 @@ final class QuotedCsvReader {
     private QuotedCsvReader() {
     }
 
-    static LoadedTrajectory read(Path path, String source, ReadOptions options, String reason) {
+    static LoadedTrajectory read(ByteSource file, String source, ReadOptions options, String reason) {
         CsvLayout layout = options.csv();
         CSVFormat format = CSVFormat.DEFAULT.builder()
                 .setDelimiter(layout.delimiter())
@@ -44,7 +42,7 @@ final class QuotedCsvReader {
         MessageDigest sha = ByteLines.sha256();
         InputStream raw;
         try {
-            raw = Files.newInputStream(path);
+            raw = file.open();
         } catch (IOException | SecurityException e) {
             throw FileProblems.unreadable(source, e);
         }

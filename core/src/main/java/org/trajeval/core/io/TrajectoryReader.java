@@ -44,21 +44,54 @@ public final class TrajectoryReader {
             throw BagTopics.needed(path, source);
         }
         checkFile(path, source, options.maxBytes());
+        return readText(ByteSource.of(path), source, options);
+    }
+
+    /**
+     * Reads one text trajectory file held in memory ({@link InputBytes}: a file read from a stream,
+     * e.g. {@code hdfs:} or {@code s3a:}) exactly as {@link #read(Path, ReadOptions)} reads the same
+     * bytes from a local file: same format detection, numbers and SHA-256; the source is
+     * {@link InputBytes#name()}. Bags are refused: their readers seek in a local file.
+     *
+     * @throws InputException on any bad input, naming the file as given
+     */
+    public static LoadedTrajectory read(InputBytes bytes, ReadOptions options) {
+        Objects.requireNonNull(bytes, "bytes");
+        Objects.requireNonNull(options, "options");
+        checkOptions(options);
+        String source = bytes.name();
+        byte[] head = new byte[16];
+        int n = Math.max(0, bytes.readAt(0, java.nio.ByteBuffer.wrap(head)));
+        if (options.format() == TrajectoryFormat.BAG || (options.bag() != null && options.bag().topic() != null)
+                || Bags.kindOfHead(head, n) != null) {
+            throw new InputException(source, 0, null, InputProblem.UNREADABLE, "ROS bags (MCAP, ROS 1, rosbag2 "
+                    + "sqlite3) are read from a local file only (their readers seek in the file); copy the bag to a "
+                    + "local disk or a mounted folder", null);
+        }
+        if (bytes.size() > options.maxBytes()) {
+            throw FileProblems.tooManyBytes(source, bytes.size(), options.maxBytes());
+        }
+        checkBytes(source, bytes.size(), head, n);
+        return readText(bytes, source, options);
+    }
+
+    /** Detects the format unless given, then reads the text file with that format's reader. */
+    private static LoadedTrajectory readText(ByteSource in, String source, ReadOptions options) {
         TrajectoryFormat format = options.format();
         String reason = "given";
         if (format == null) {
-            FormatDetector.Detection d = FormatDetector.detect(path, source, options.csv());
+            FormatDetector.Detection d = FormatDetector.detect(in, source, options.csv());
             format = d.format();
             reason = d.reason();
         }
         return switch (format) {
-            case CSV -> CsvTrajectoryReader.read(path, source, options, reason);
-            case TUM -> TumReader.read(path, source, options, reason);
-            case KITTI -> KittiReader.read(path, source, options, reason);
-            case EUROC -> EurocReader.read(path, source, options, reason);
-            case NCLT, ROBOTCAR_INS, ROBOTCAR_VO -> EulerPoseReader.read(path, source, options, reason, format);
-            case ICL_NUIM -> IclNuimReader.read(path, source, options, reason);
-            case BAG -> throw BagTopics.needed(path, source);
+            case CSV -> CsvTrajectoryReader.read(in, source, options, reason);
+            case TUM -> TumReader.read(in, source, options, reason);
+            case KITTI -> KittiReader.read(in, source, options, reason);
+            case EUROC -> EurocReader.read(in, source, options, reason);
+            case NCLT, ROBOTCAR_INS, ROBOTCAR_VO -> EulerPoseReader.read(in, source, options, reason, format);
+            case ICL_NUIM -> IclNuimReader.read(in, source, options, reason);
+            case BAG -> throw BagTopics.needed(Path.of(in.fileName()), source);
         };
     }
 
@@ -84,22 +117,29 @@ public final class TrajectoryReader {
         if (size > maxBytes) {
             throw FileProblems.tooManyBytes(source, size, maxBytes);
         }
+        byte[] head = new byte[4];
+        int n = 0;
+        if (size > 0) {
+            try (var in = Files.newInputStream(path)) {
+                n = in.readNBytes(head, 0, head.length);
+            } catch (IOException | SecurityException e) {
+                throw FileProblems.unreadable(source, e);
+            }
+        }
+        checkBytes(source, size, head, n);
+    }
+
+    /**
+     * Refuses an empty file, and UTF-16 text (by its byte-order mark or NUL bytes), which would
+     * otherwise read as "not a number".
+     *
+     * @param head the file's first bytes, {@code n} of them (at least 4 unless the file is shorter)
+     */
+    private static void checkBytes(String source, long size, byte[] head, int n) {
         if (size == 0) {
             throw FileProblems.empty(source, "it is empty (0 bytes)");
         }
-        refuseUtf16(path, source);
-    }
-
-    /** Refuses UTF-16 text (by its byte-order mark or NUL bytes), which would otherwise read as "not a number". */
-    private static void refuseUtf16(Path path, String source) {
-        byte[] head = new byte[4];
-        int n;
-        try (var in = Files.newInputStream(path)) {
-            n = in.readNBytes(head, 0, head.length);
-        } catch (IOException | SecurityException e) {
-            throw FileProblems.unreadable(source, e);
-        }
-        String utf16 = TextFiles.utf16(java.util.Arrays.copyOf(head, n));
+        String utf16 = TextFiles.utf16(java.util.Arrays.copyOf(head, Math.min(n, 4)));
         if (utf16 != null) {
             throw new InputException(source, 1, null, InputProblem.NOT_UTF8, "the file is " + utf16
                     + "; trajeval reads UTF-8 or ASCII text (convert it, e.g. iconv -f UTF-16 -t UTF-8)", null);

@@ -1,6 +1,5 @@
 package org.trajeval.core.io;
 
-import java.nio.file.Path;
 import org.trajeval.core.traj.SpatialTrajectory;
 
 /**
@@ -17,8 +16,8 @@ final class TumReader {
     private TumReader() {
     }
 
-    static LoadedTrajectory read(Path path, String source, ReadOptions options, String reason) {
-        try (ByteLines lines = ByteLines.open(path, source, options.maxBytes())) {
+    static LoadedTrajectory read(ByteSource file, String source, ReadOptions options, String reason) {
+        try (ByteLines lines = ByteLines.open(file, source, options.maxBytes())) {
             NumericRows rows = new NumericRows(lines, source, NumericRows.WHITESPACE, false);
             rows.select(new int[] {0, 1, 2, 3, 4, 5, 6, 7}, NAMES, UNITS);
             rows.requireFields(8, "t tx ty tz qx qy qz qw, separated by spaces");

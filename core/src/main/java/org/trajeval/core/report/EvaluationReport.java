@@ -45,7 +45,7 @@ public record EvaluationReport(
         @JsonProperty("coverage") CoverageInfo coverage,
         @JsonProperty("warnings") java.util.List<Warning> warnings,
         @JsonProperty("time_base") String timeBase,
-        @JsonProperty("extra") Extra extra) {
+        @JsonProperty("extra") Extra extra) implements java.io.Serializable {
 
     /** @return a copy with another association section */
     public EvaluationReport withAssociation(AssociationInfo a) {
@@ -83,7 +83,7 @@ public record EvaluationReport(
      */
     @JsonPropertyOrder({"reference", "estimate"})
     public record Inputs(@JsonProperty("reference") InputInfo reference,
-            @JsonProperty("estimate") InputInfo estimate) {
+            @JsonProperty("estimate") InputInfo estimate) implements java.io.Serializable {
     }
 
     /**
@@ -96,7 +96,7 @@ public record EvaluationReport(
     @JsonPropertyOrder({"path", "format", "format_reason", "poses", "sha256"})
     public record InputInfo(@JsonProperty("path") String path, @JsonProperty("format") String format,
             @JsonProperty("format_reason") String formatReason, @JsonProperty("poses") int poses,
-            @JsonProperty("sha256") String sha256) {
+            @JsonProperty("sha256") String sha256) implements java.io.Serializable {
     }
 
     /**
@@ -126,7 +126,7 @@ public record EvaluationReport(
             @JsonProperty("interp_error_bound_m") Double interpErrorBoundM,
             @JsonProperty("gap_limit_s") Double gapLimitS, @JsonProperty("dropped_in_gaps") int droppedInGaps,
             @JsonProperty("gaps") java.util.List<Gap> gaps,
-            @JsonProperty("t_offset_auto") OffsetEstimate tOffsetAuto) {
+            @JsonProperty("t_offset_auto") OffsetEstimate tOffsetAuto) implements java.io.Serializable {
         /** Most gaps listed in a report (all are counted). */
         public static final int MAX_GAPS_LISTED = 100;
 
@@ -150,7 +150,7 @@ public record EvaluationReport(
     @JsonPropertyOrder({"trans_x_m", "trans_y_m", "trans_z_m", "heading_rad", "speed_mps", "speed_horizon_s"})
     public record Extra(@JsonProperty("trans_x_m") Stats transXM, @JsonProperty("trans_y_m") Stats transYM,
             @JsonProperty("trans_z_m") Stats transZM, @JsonProperty("heading_rad") Stats headingRad,
-            @JsonProperty("speed_mps") Stats speedMps, @JsonProperty("speed_horizon_s") double speedHorizonS) {
+            @JsonProperty("speed_mps") Stats speedMps, @JsonProperty("speed_horizon_s") double speedHorizonS) implements java.io.Serializable {
     }
 
     /**
@@ -165,7 +165,7 @@ public record EvaluationReport(
     @JsonPropertyOrder({"correlation_s", "uncertainty_s", "correlation", "method"})
     public record OffsetEstimate(@JsonProperty("correlation_s") double correlationS,
             @JsonProperty("uncertainty_s") double uncertaintyS, @JsonProperty("correlation") double correlation,
-            @JsonProperty("method") String method) {
+            @JsonProperty("method") String method) implements java.io.Serializable {
     }
 
     /**
@@ -178,7 +178,7 @@ public record EvaluationReport(
      */
     @JsonPropertyOrder({"start_s", "end_s", "length_s", "dropped"})
     public record Gap(@JsonProperty("start_s") double startS, @JsonProperty("end_s") double endS,
-            @JsonProperty("length_s") double lengthS, @JsonProperty("dropped") int dropped) {
+            @JsonProperty("length_s") double lengthS, @JsonProperty("dropped") int dropped) implements java.io.Serializable {
     }
 
     /**
@@ -196,7 +196,7 @@ public record EvaluationReport(
             @JsonProperty("longest_gap_s") double longestGapS,
             @JsonProperty("longest_gap_start_s") double longestGapStartS,
             @JsonProperty("uncovered_s") double uncoveredS,
-            @JsonProperty("reference_span_s") double referenceSpanS) {
+            @JsonProperty("reference_span_s") double referenceSpanS) implements java.io.Serializable {
     }
 
     /**
@@ -206,7 +206,7 @@ public record EvaluationReport(
      * @param message one line for people
      */
     @JsonPropertyOrder({"code", "message"})
-    public record Warning(@JsonProperty("code") String code, @JsonProperty("message") String message) {
+    public record Warning(@JsonProperty("code") String code, @JsonProperty("message") String message) implements java.io.Serializable {
     }
 
     /**
@@ -221,7 +221,7 @@ public record EvaluationReport(
     @JsonPropertyOrder({"model", "rotation", "translation_m", "scale", "poses_used"})
     public record AlignmentInfo(@JsonProperty("model") String model, @JsonProperty("rotation") double[][] rotation,
             @JsonProperty("translation_m") double[] translationM, @JsonProperty("scale") double scale,
-            @JsonProperty("poses_used") int posesUsed) {
+            @JsonProperty("poses_used") int posesUsed) implements java.io.Serializable {
     }
 
     /**
@@ -230,7 +230,7 @@ public record EvaluationReport(
      *     the angle of R_ref^T R_est in SE(3)
      */
     @JsonPropertyOrder({"trans_m", "rot_rad"})
-    public record Ate(@JsonProperty("trans_m") Stats transM, @JsonProperty("rot_rad") Stats rotRad) {
+    public record Ate(@JsonProperty("trans_m") Stats transM, @JsonProperty("rot_rad") Stats rotRad) implements java.io.Serializable {
     }
 
     /**
@@ -250,7 +250,7 @@ public record EvaluationReport(
             @JsonProperty("pairs") long pairs, @JsonProperty("delta") double delta,
             @JsonProperty("unit") String unit, @JsonProperty("pair_selection") String pairSelection,
             @JsonProperty("pairs_from") String pairsFrom, @JsonProperty("mean_horizon_s") Double meanHorizonS,
-            @JsonProperty("mean_horizon_m") Double meanHorizonM) {
+            @JsonProperty("mean_horizon_m") Double meanHorizonM) implements java.io.Serializable {
     }
 
     /**
@@ -268,7 +268,7 @@ public record EvaluationReport(
             @JsonProperty("rot_deg_per_m") Double rotDegPerM, @JsonProperty("segments") int segments,
             @JsonProperty("step_frames") int stepFrames,
             @JsonProperty("per_length") java.util.List<DriftAtLength> perLength,
-            @JsonProperty("path_length_m") Double pathLengthM) {
+            @JsonProperty("path_length_m") Double pathLengthM) implements java.io.Serializable {
 
         /** @return rotational drift in KITTI's unit, deg per 100 m (null without segments) */
         @JsonProperty("rot_deg_per_100m")
@@ -291,7 +291,7 @@ public record EvaluationReport(
      */
     @JsonPropertyOrder({"length_m", "trans_pct", "rot_deg_per_m", "segments"})
     public record DriftAtLength(@JsonProperty("length_m") double lengthM, @JsonProperty("trans_pct") Double transPct,
-            @JsonProperty("rot_deg_per_m") Double rotDegPerM, @JsonProperty("segments") int segments) {
+            @JsonProperty("rot_deg_per_m") Double rotDegPerM, @JsonProperty("segments") int segments) implements java.io.Serializable {
     }
 
     /**
@@ -302,7 +302,7 @@ public record EvaluationReport(
     public record Stats(@JsonProperty("rmse") Double rmse, @JsonProperty("mean") Double mean,
             @JsonProperty("median") Double median, @JsonProperty("std") Double std,
             @JsonProperty("min") Double min, @JsonProperty("max") Double max,
-            @JsonProperty("sse") Double sse, @JsonProperty("n") long n) {
+            @JsonProperty("sse") Double sse, @JsonProperty("n") long n) implements java.io.Serializable {
 
         /**
          * Internal (not part of the public API, see {@link org.trajeval.api}): used by the evaluator.

@@ -14,7 +14,7 @@ import java.util.List;
  * @param estimates one trace per scored run (method, seed) on this sequence
  */
 public record SequencePlot(String sequence, String timeUnit, double[] referenceX, double[] referenceY, double[] referenceZ,
-        List<Trace> estimates) {
+        List<Trace> estimates) implements java.io.Serializable {
 
     /**
      * @param method method name
@@ -27,6 +27,6 @@ public record SequencePlot(String sequence, String timeUnit, double[] referenceX
      * @param alignment the alignment model the evaluation applied ("none" when nothing was aligned)
      */
     public record Trace(String method, long seed, double[] x, double[] y, double[] z, double[] t, double[] errorM,
-            String alignment) {
+            String alignment) implements java.io.Serializable {
     }
 }

@@ -551,7 +551,7 @@ public record SuiteReport(
             @JsonProperty("estimate") String estimate, @JsonProperty("status") String status,
             @JsonProperty("failure") RunFailure failure, @JsonProperty("coverage") Double coverage,
             @JsonProperty("metrics") Map<String, Double> metrics, @JsonProperty("score") double score,
-            @JsonProperty("evaluation") EvaluationReport evaluation) {
+            @JsonProperty("evaluation") EvaluationReport evaluation) implements java.io.Serializable {
 
         /** @return true when the run succeeded */
         public boolean ok() {
@@ -565,6 +565,6 @@ public record SuiteReport(
      * @param detail one line for a person
      */
     @JsonPropertyOrder({"reason", "detail"})
-    public record RunFailure(@JsonProperty("reason") String reason, @JsonProperty("detail") String detail) {
+    public record RunFailure(@JsonProperty("reason") String reason, @JsonProperty("detail") String detail) implements java.io.Serializable {
     }
 }

@@ -144,9 +144,9 @@ class NumberParsingTest {
         Path quotedFile = Files.write(dir.resolve("quoted.csv"), quoted);
         ReadOptions options = ReadOptions.defaults();
 
-        PlanarTrajectory fast = (PlanarTrajectory) CsvTrajectoryReader.readPlain(plainFile, "plain.csv", options, "given")
+        PlanarTrajectory fast = (PlanarTrajectory) CsvTrajectoryReader.readPlain(ByteSource.of(plainFile), "plain.csv", options, "given")
                 .trajectory();
-        PlanarTrajectory commons = (PlanarTrajectory) QuotedCsvReader.read(plainFile, "plain.csv", options, "given")
+        PlanarTrajectory commons = (PlanarTrajectory) QuotedCsvReader.read(ByteSource.of(plainFile), "plain.csv", options, "given")
                 .trajectory();
         PlanarTrajectory viaQuotes = (PlanarTrajectory) TrajectoryReader.read(quotedFile, options).trajectory();
 

@@ -52,6 +52,15 @@ public final class Bags {
         } catch (IOException | SecurityException e) {
             return null;
         }
+        return kindOfHead(head, n);
+    }
+
+    /**
+     * @param head the first bytes of a file
+     * @param n how many of them there are
+     * @return the container kind those bytes start, or null when they start no bag
+     */
+    public static Kind kindOfHead(byte[] head, int n) {
         if (startsWith(head, n, McapReader.MAGIC)) {
             return Kind.MCAP;
         }
