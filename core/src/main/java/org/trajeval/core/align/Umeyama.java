@@ -24,23 +24,8 @@ final class Umeyama {
      * @return {R (9, row-major), t (3), {c}} or {@code null} when the covariance has rank < 2
      */
     static double[][] fit(PositionColumns x, PositionColumns y, int n, boolean withScale) {
-        // the means: one pass, each coordinate summed in index order (as three passes would)
-        double sx0 = 0;
-        double sx1 = 0;
-        double sx2 = 0;
-        double sy0 = 0;
-        double sy1 = 0;
-        double sy2 = 0;
-        for (int i = 0; i < n; i++) {
-            sx0 += x.x(i);
-            sx1 += x.y(i);
-            sx2 += x.z(i);
-            sy0 += y.x(i);
-            sy1 += y.y(i);
-            sy2 += y.z(i);
-        }
-        double[] mx = {sx0 / n, sx1 / n, sx2 / n};
-        double[] my = {sy0 / n, sy1 / n, sy2 / n};
+        double[] mx = x.centroid(n);
+        double[] my = y.centroid(n);
         double sigmaX = 0;
         double[] cov = new double[9];
         for (int i = 0; i < n; i++) {
