@@ -152,6 +152,16 @@ public final class InterpolatedReference implements PositionColumns {
         return z == null ? 0.0 : z[k];
     }
 
+    /** @return the interpolated yaw of pose k (rad); planar references only */
+    public double yaw(int k) {
+        return yaw[k];
+    }
+
+    /** @return true when the reference is planar (rotations about +z by {@link #yaw}) */
+    public boolean isPlanar() {
+        return yaw != null;
+    }
+
     /** Writes the rotation matrix of pose k (row-major) into {@code out[o..o+9)}. */
     public void rotation(int k, double[] out, int o) {
         if (yaw != null) {

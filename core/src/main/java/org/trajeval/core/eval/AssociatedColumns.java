@@ -36,6 +36,8 @@ final class AssociatedColumns implements PosePairs {
     private final double[] rot = new double[9];
     private final double[] trans = new double[3];
     private double scale = 1.0;
+    /** The 2x2 kernels when the pairs and the alignment are planar; null otherwise. */
+    private PlanarErrors planar;
 
     private AssociatedColumns(Trajectory ref, Trajectory est, InterpolatedReference interpolated, int[] refIndex,
             int[] estIndex, int k0, int m, double off) {
@@ -107,6 +109,21 @@ final class AssociatedColumns implements PosePairs {
         System.arraycopy(tf.rotation(), 0, rot, 0, 9);
         System.arraycopy(tf.translation(), 0, trans, 0, 3);
         scale = tf.scale();
+        planar = PlanarErrors.of(est, estIndex, k0, interpolated, ref, refIndex, tf);
+    }
+
+    /**
+     * Sets the alignment as {@link #align} does but keeps the 3x3 matrix kernels for planar pairs
+     * too: the reference the planar kernels are tested against.
+     */
+    void alignForMatrixKernels(AlignmentTransform tf) {
+        align(tf);
+        planar = null;
+    }
+
+    /** @return true when the errors are computed from 2x2 rotation blocks ({@link PlanarErrors}) */
+    boolean planarKernels() {
+        return planar != null;
     }
 
     /** Per-thread scratch space of the error kernels. */
@@ -125,6 +142,15 @@ final class AssociatedColumns implements PosePairs {
         double transError;
         /** Rotation error of the last pose or pair computed (rad). */
         double rotError;
+        private PlanarErrors.Window window;
+
+        /** @return the (cos, sin) window of the planar kernels, made on first use */
+        PlanarErrors.Window window() {
+            if (window == null) {
+                window = new PlanarErrors.Window();
+            }
+            return window;
+        }
     }
 
     /** Writes the aligned estimate pose k: position into {@code p[0..3)} (m), rotation into {@code r} (9). */
@@ -157,6 +183,9 @@ final class AssociatedColumns implements PosePairs {
      * the angle of R'_k^T R_ref,k (rad).
      */
     void ate(int k, Scratch s) {
+        if (planar != null && planar.ate(k, s)) {
+            return;
+        }
         double[] p = s.pi;
         alignedPose(k, p, s.ri, s.rp);
         double dx = p[0] - refPositions.x(k);
@@ -180,6 +209,9 @@ final class AssociatedColumns implements PosePairs {
      * t: e[9..12)), |trans(E)| (m) into {@code s.transError}, its angle (rad) into {@code s.rotError}.
      */
     void rpe(int i, int j, Scratch s) {
+        if (planar != null && planar.rpe(i, j, s)) {
+            return;
+        }
         referenceRotation(i, s.ri, 0);
         referenceRotation(j, s.rj, 0);
         RelativeMotion.inverseTimes(s.ri, refPositions.x(i), refPositions.y(i), refPositions.z(i), s.rj,

@@ -1,0 +1,95 @@
+package org.trajeval.core.geom;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+
+/**
+ * {@link PlanarAngle} must return {@link Rotations#angle} of the 3x3 matrix
+ * [[m00, m01, 0], [m10, m11, 0], [0, 0, 1]] bit for bit, whatever the signs of its zeros (the
+ * matrix kernels produce +0 or -0 there): seeded random blocks of every kind its branches meet.
+ */
+class PlanarAngleTest {
+
+    @Test
+    void rotationBlocksGiveTheMatrixAngleBitForBitAtEveryAngle() {
+        Random rnd = new Random(15);
+        for (int trial = 0; trial < 200_000; trial++) {
+            double yaw = switch (trial % 6) {
+                case 0 -> (rnd.nextDouble() - 0.5) * 2 * Math.PI; // anywhere
+                case 1 -> rnd.nextGaussian() * 1e-3; // the small-angle series branch and its edge
+                case 2 -> rnd.nextGaussian() * 1e-9; // near 0
+                case 3 -> Math.PI - Math.abs(rnd.nextGaussian()) * 1e-7; // near +pi (Shepperd's m22 branch)
+                case 4 -> -Math.PI + Math.abs(rnd.nextGaussian()) * 1e-7; // near -pi
+                default -> (rnd.nextDouble() - 0.5) * 200 * Math.PI; // many turns
+            };
+            double c = Math.cos(yaw);
+            double s = Math.sin(yaw);
+            // a product of two rotations, as the kernels form them: cos/sin rounded twice
+            double yaw2 = rnd.nextGaussian();
+            double c2 = Math.cos(yaw2);
+            double s2 = Math.sin(yaw2);
+            double m00 = c * c2 + s * s2;
+            double m01 = c * -s2 + s * c2;
+            double m10 = -s * c2 + c * s2;
+            double m11 = -s * -s2 + c * c2;
+            sameAsMatrix(c, -s, s, c, rnd);
+            sameAsMatrix(m00, m01, m10, m11, rnd);
+        }
+    }
+
+    @Test
+    void exactAnglesAndSignedZerosGiveTheMatrixAngle() {
+        Random rnd = new Random(16);
+        double[][] blocks = {
+            {1, 0, 0, 1}, {1, -0.0, 0.0, 1}, {-1, 0, 0, -1}, {-1, -0.0, -0.0, -1}, {0, -1, 1, 0}, {0, 1, -1, 0},
+            {-0.0, -1, 1, -0.0}, {Math.cos(Math.PI), -Math.sin(Math.PI), Math.sin(Math.PI), Math.cos(Math.PI)},
+            {Math.cos(1e-3), -Math.sin(1e-3), Math.sin(1e-3), Math.cos(1e-3)},
+            {Math.cos(Math.nextUp(1e-3)), -Math.sin(Math.nextUp(1e-3)), Math.sin(Math.nextUp(1e-3)),
+                Math.cos(Math.nextUp(1e-3))},
+        };
+        for (double[] b : blocks) {
+            sameAsMatrix(b[0], b[1], b[2], b[3], rnd);
+        }
+    }
+
+    @Test
+    void nonOrthogonalBlocksAndReflectionsGiveTheMatrixAngle() {
+        Random rnd = new Random(17);
+        for (int trial = 0; trial < 20_000; trial++) {
+            double yaw = (rnd.nextDouble() - 0.5) * 2 * Math.PI;
+            double c = Math.cos(yaw);
+            double s = Math.sin(yaw);
+            double e = switch (trial % 4) {
+                case 0 -> 1e-6; // polar factor first (KITTI-like products)
+                case 1 -> 1e-12; // at the orthogonality tolerance
+                case 2 -> 1e-2;
+                default -> 0.0;
+            };
+            double m00 = c + e * rnd.nextGaussian();
+            double m01 = -s + e * rnd.nextGaussian();
+            double m10 = s + e * rnd.nextGaussian();
+            double m11 = c + e * rnd.nextGaussian();
+            sameAsMatrix(m00, m01, m10, m11, rnd);
+            sameAsMatrix(c, s, s, -c, rnd); // a reflection: Shepperd's m00 or m11 branch
+            sameAsMatrix(-c, s, s, c, rnd);
+        }
+        sameAsMatrix(Double.NaN, 0, 0, 1, rnd);
+        sameAsMatrix(2, 0, 0, 0.5, rnd);
+    }
+
+    /** Compares with the matrix angle for a random choice of signs of the four zeros. */
+    private static void sameAsMatrix(double m00, double m01, double m10, double m11, Random rnd) {
+        double[] r = {m00, m01, zero(rnd), m10, m11, zero(rnd), zero(rnd), zero(rnd), 1.0};
+        double expected = Rotations.angle(r, 0);
+        double actual = PlanarAngle.of(m00, m01, m10, m11);
+        assertEquals(Double.doubleToRawLongBits(expected), Double.doubleToRawLongBits(actual),
+                () -> "block " + m00 + " " + m01 + " " + m10 + " " + m11 + ": matrix " + expected + " planar "
+                        + actual);
+    }
+
+    private static double zero(Random rnd) {
+        return rnd.nextBoolean() ? 0.0 : -0.0;
+    }
+}
