@@ -2,6 +2,7 @@ package org.trajeval.core.assoc;
 
 import java.util.function.IntToDoubleFunction;
 import org.trajeval.core.geom.Rotations;
+import org.trajeval.core.geom.StrictAtan2;
 import org.trajeval.core.traj.PlanarTrajectory;
 import org.trajeval.core.traj.PoseSequence;
 import org.trajeval.core.traj.PositionColumns;
@@ -103,7 +104,7 @@ public final class InterpolatedReference implements PositionColumns {
             f = Math.max(0.0, Math.min(1.0, f));
             x[k] = ref.x(seg - 1) + f * (ref.x(seg) - ref.x(seg - 1));
             y[k] = ref.y(seg - 1) + f * (ref.y(seg) - ref.y(seg - 1));
-            yaw[k] = Math.atan2(s0 + f * (s1 - s0), c0 + f * (c1 - c0));
+            yaw[k] = StrictAtan2.atan2(s0 + f * (s1 - s0), c0 + f * (c1 - c0)); // Math.atan2's bits
         }
     }
 

@@ -54,7 +54,7 @@ public final class PlanarAngle {
             w = -w;
         }
         double axNorm = Math.sqrt(z * z);
-        double angle = 2 * Math.atan2(axNorm, w);
+        double angle = 2 * StrictAtan2.atan2(axNorm, w); // Math.atan2's bits, without its JNI call
         double scale;
         if (angle <= 1e-3) {
             double a2 = angle * angle;
