@@ -19,7 +19,10 @@ import org.trajeval.core.traj.Trajectory;
  * <p>Once an alignment (s, R, t) is set, the per-pose errors are those of the general path, in
  * its operation order: aligned estimate p' = R (s p) + t, R' = R R_est; ATE
  * |p'_k - p_ref,k| (m) and the angle of R'_k^T R_ref,k (rad); RPE of a pair (i, j):
- * E = (Q_i^-1 Q_j)^-1 (P'_i^-1 P'_j), |trans(E)| (m) and the angle of E (rad).
+ * E = (Q_i^-1 Q_j)^-1 (P'_i^-1 P'_j), |trans(E)| (m) and the angle of E (rad). When both
+ * trajectories are planar and the alignment is a rotation about +z, {@link PlanarErrors} computes
+ * them from 2x2 blocks, the same operations without those on the matrices' zeros and ones (the
+ * same bits); the 3x3 kernels here remain for SE(3) pairs and as its fallback.
  */
 final class AssociatedColumns implements PosePairs {
     private final Trajectory ref;
