@@ -24,8 +24,8 @@ import org.trajeval.core.traj.Trajectory;
  * association, every alignment model, RPE in seconds or frames, on primitive columns without
  * per-pose objects ({@link AssociatedColumns}) and in fixed chunks spread over the threads. The
  * numbers are the general path's ({@link Evaluator#run}, which also keeps the per-pose data), bit
- * for bit for the per-pose errors. Planar pairs aligned about +z (none, se2, sim2, posyaw, origin)
- * take 2x2 rotation blocks of (cos, sin) of the yaws instead of 3x3 matrices ({@link PlanarErrors}).
+ * for bit for the per-pose errors. Planar pairs aligned about +z (every model but se3/sim3 fits
+ * that are not) take 2x2 blocks of (cos, sin) of the yaws instead of 3x3 matrices ({@link PlanarErrors}).
  *
  * <p>Memory on top of the inputs: the reference interpolated at the estimate stamps (planar 24 B,
  * SE(3) 56 B per pose; none for nearest matching, 8 B of index maps instead) and two error arrays
