@@ -30,6 +30,8 @@ final class ByteLines implements Closeable {
     private int pos;
     private int limit;
     private int scanFrom;
+    /** Offset just past the last '\n' read into buf (0 when there is none after pos). */
+    private int complete;
     private boolean eof;
     private boolean started;
     private long bytesRead;
@@ -180,6 +182,31 @@ final class ByteLines implements Closeable {
         return -1;
     }
 
+    /** @return offset in {@link #buffer()} where the line after the current one starts */
+    int position() {
+        return pos;
+    }
+
+    /**
+     * @return offset just past the last '\n' in {@link #buffer()}: a line that starts at
+     *     {@link #position()} below it ends in the buffer, with its '\n', before it (so a parser may
+     *     read ahead up to it, and a little past it: every byte below {@code buffer().length} is readable)
+     */
+    int completeLinesEnd() {
+        return complete;
+    }
+
+    /**
+     * Makes the line from {@link #position()} to the '\n' at {@code newline} the current line, as
+     * {@link #next()} would (a '\r' before the '\n' is not part of it), for a parser that found
+     * the line end itself; {@code newline} must lie below {@link #completeLinesEnd()}.
+     */
+    void acceptLine(int newline) {
+        setLine(pos, newline);
+        pos = newline + 1;
+        scanFrom = pos;
+    }
+
     private void setLine(int from, int to) {
         lineNumber++;
         start = from;
@@ -193,6 +220,7 @@ final class ByteLines implements Closeable {
             scanFrom -= pos;
             limit = keep;
             pos = 0;
+            complete = 0; // fill is only called when no '\n' is left after pos
         }
         if (limit == buf.length) {
             if (buf.length >= MAX_LINE_BYTES) {
@@ -214,6 +242,12 @@ final class ByteLines implements Closeable {
             return;
         }
         sha.update(buf, limit, n);
+        for (int i = limit + n - 1; i >= limit; i--) {
+            if (buf[i] == '\n') {
+                complete = i + 1;
+                break;
+            }
+        }
         limit += n;
         bytesRead += n;
         if (bytesRead > maxBytes) {

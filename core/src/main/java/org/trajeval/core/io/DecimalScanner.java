@@ -50,40 +50,70 @@ final class DecimalScanner {
     private static final long HIGH_BITS = 0x8080808080808080L;
 
     /**
-     * The common case without a loop per digit: a run of up to eight digits is found and summed in
-     * one eight-byte word (SWAR), as in fast_float. Needs 40 readable bytes from {@code from}
-     * (a sign, two runs of up to 16 digits, a point), and handles numbers of at most 18 significant
-     * digits without an exponent on Clinger's exact path.
+     * The common case without a loop per digit: {@code [+-]? d* [. d*]} with at most 16 digits
+     * on each side of the point and 18 in all, and no exponent. Each run of up to eight digits is
+     * found and summed in one eight-byte word (SWAR, as in fast_float), so a number such as
+     * {@code -31.499999} takes two words; its value is {@code m / 10^f} for the significand
+     * {@code m} (all its digits read as one integer) and {@code f} digits after the point, one
+     * IEEE division, exact by Clinger when {@code m <= 2^53} (both operands are then exact
+     * doubles, {@code f <= 18 <= 22}).
+     *
+     * <p>The end of the field is checked once, at the end: a number that runs past {@code to}
+     * (its digits went on in bytes that are not the field's) is left to {@link #scanAny}, as is
+     * anything else unusual. Needs 40 readable bytes from {@code from} (a sign, two runs of two
+     * words, a point).
      *
      * @return as {@link #scan}, or {@link #LONG_NUMBER} for anything else
      */
     private int scanShort(byte[] b, int from, int to) {
         int i = from;
-        boolean negative = false;
-        if (i < to && (b[i] == '-' || b[i] == '+')) {
-            negative = b[i] == '-';
+        byte first = b[i];
+        boolean negative = first == '-';
+        if (negative || first == '+') {
             i++;
         }
-        significand = 0;
-        int intStart = i;
-        i = shortDigits(b, i, to);
-        int intDigits = i - intStart;
+        final int intStart = i;
+        long t = (long) LONGS.get(b, i) - ZEROS;
+        int n = digitRun(t);
+        long m;
+        if (n < 8) {
+            m = leadingDigits(t, n);
+            i += n;
+        } else {
+            long u = (long) LONGS.get(b, i + 8) - ZEROS;
+            int n2 = digitRun(u);
+            if (n2 == 8) {
+                return LONG_NUMBER;
+            }
+            m = sumDigits(t) * LONG_POWERS_OF_TEN[n2] + leadingDigits(u, n2);
+            i += 8 + n2;
+        }
+        final int intDigits = i - intStart;
         int fracDigits = 0;
-        if (i < to && b[i] == '.') {
-            int j = shortDigits(b, i + 1, to);
-            fracDigits = j - i - 1;
+        if (b[i] == '.') {
+            long f = (long) LONGS.get(b, i + 1) - ZEROS;
+            int k = digitRun(f);
+            if (k < 8) {
+                m = m * LONG_POWERS_OF_TEN[k] + leadingDigits(f, k);
+                fracDigits = k;
+            } else {
+                long g = (long) LONGS.get(b, i + 9) - ZEROS;
+                int k2 = digitRun(g);
+                if (k2 == 8 || intDigits + 8 + k2 > 18) {
+                    return LONG_NUMBER;
+                }
+                m = (m * 100_000_000L + sumDigits(f)) * LONG_POWERS_OF_TEN[k2] + leadingDigits(g, k2);
+                fracDigits = 8 + k2;
+            }
             if (intDigits + fracDigits > 0) {
-                i = j;
+                i += 1 + fracDigits;
             }
         }
-        long m = significand;
         int digits = intDigits + fracDigits;
-        if (digits == 0 || digits > 18 || (i < to && (b[i] >= '0' && b[i] <= '9' || b[i] == 'e' || b[i] == 'E'))) {
+        if (digits == 0 || digits > 18 || i > to || i < to && (b[i] == 'e' || b[i] == 'E')) {
             return LONG_NUMBER;
         }
-        if (m == 0) {
-            value = negative ? -0.0 : 0.0;
-        } else if (m <= EXACT_SIGNIFICAND && fracDigits <= 22) {
+        if (m <= EXACT_SIGNIFICAND) {
             double v = (double) m / POWERS_OF_TEN[fracDigits];
             value = negative ? -v : v;
         } else {
@@ -92,34 +122,32 @@ final class DecimalScanner {
         return i;
     }
 
-    /** The significand accumulated by {@link #shortDigits} and {@link #anyDigits}. */
+    /**
+     * @param t eight bytes minus '0' each, first byte lowest
+     * @return how many of the leading bytes are digits (0..8); a byte is a digit exactly when
+     *     {@code t} holds 0..9 there: 10..127 gain the high bit when 0x76 is added, 128..255 (and
+     *     bytes below '0', which borrow) have it already. A borrow or carry only travels upwards,
+     *     past the first non-digit, so the lowest flagged byte is exact.
+     */
+    private static int digitRun(long t) {
+        long nonDigits = ((t + ABOVE_NINE) | t) & HIGH_BITS;
+        return Long.numberOfTrailingZeros(nonDigits) >>> 3;
+    }
+
+    /**
+     * @param t eight bytes minus '0' each, first byte lowest
+     * @param n how many leading bytes are digits, 0..7
+     * @return the number those n digits spell (0 when n = 0): they are moved to the top of the
+     *     word, in two shifts so that n = 0 shifts out everything, and summed as eight digits
+     */
+    private static long leadingDigits(long t, int n) {
+        return sumDigits((t << (56 - (n << 3))) << 8);
+    }
+
+    /** The significand accumulated by {@link #anyDigits}. */
     private long significand;
     /** False once {@link #anyDigits} dropped a digit past 18 significant ones. */
     private boolean exact;
-
-    /**
-     * Appends the run of at most 16 digits at {@code b[i..to)} to {@link #significand}, eight at
-     * a time (a longer run is left for the caller to see); needs 16 readable bytes from i.
-     *
-     * @return the index just past the digits taken
-     */
-    private int shortDigits(byte[] b, int i, int to) {
-        long m = significand;
-        for (int run = 0; run < 2; run++) {
-            long t = (long) LONGS.get(b, i) - ZEROS;
-            int n = digitRun(t, to - i);
-            if (n == 0) {
-                break;
-            }
-            m = m * LONG_POWERS_OF_TEN[n] + sumDigits(t << ((8 - n) << 3));
-            i += n;
-            if (n < 8) {
-                break;
-            }
-        }
-        significand = m;
-        return i;
-    }
 
     /**
      * Appends the run of digits at {@code b[i..to)}, however long, to {@link #significand}: eight at
@@ -152,19 +180,6 @@ final class DecimalScanner {
         }
         significand = m;
         return i;
-    }
-
-    /**
-     * @param t eight bytes minus '0' each, first byte lowest
-     * @param left bytes left before the end of the field
-     * @return how many of the leading bytes are digits (0..8, at most {@code left}); a byte is a
-     *     digit exactly when {@code t} holds 0..9 there: 10..127 gain the high bit when 0x76 is
-     *     added, 128..255 (and bytes below '0', which borrow) have it already. A borrow or carry
-     *     only travels upwards, past the first non-digit, so the lowest flagged byte is exact.
-     */
-    private static int digitRun(long t, int left) {
-        long nonDigits = ((t + ABOVE_NINE) | t) & HIGH_BITS;
-        return Math.min(Long.numberOfTrailingZeros(nonDigits) >>> 3, Math.max(left, 0));
     }
 
     /** @return the number whose decimal digits are the bytes of {@code d} (values 0..9, most significant lowest) */

@@ -113,40 +113,62 @@ final class NumericRows {
      * @throws InputException on a wrong field count, a field that is not a number, or a non-finite one
      */
     boolean next(double[] row) {
+        if (exactFields >= 0 && lines.position() < lines.completeLinesEnd() && parseInOnePass(row)) {
+            return true;
+        }
         if (!nextDataLine()) {
             return false;
         }
-        if (exactFields < 0 || !parseInOnePass(row)) {
-            parseCarefully(row);
-        }
+        parseCarefully(row);
         return true;
     }
 
     /**
-     * The fast path: one pass over the line, numbers scanned in place.
+     * The fast path: the line at {@link ByteLines#position()} is split and its numbers scanned in
+     * one pass, which also finds its end (no separate search for the '\n'); the line is then taken
+     * with {@link ByteLines#acceptLine}. Only called when the whole line is in the buffer, so every
+     * byte looked at lies before the buffer's last '\n'.
      *
-     * @return false on anything unusual (wrong count, bad or non-finite number, quote); the
-     *     careful path then says what, or reads what this path does not
+     * @return false on anything unusual (a comment or blank line, a wrong count, a bad or
+     *     non-finite number, a quote), leaving the line unread; {@link #next} then reads it on the
+     *     careful path, which says what is wrong or reads what this path does not
      */
     private boolean parseInOnePass(double[] row) {
         final byte[] b = lines.buffer();
-        final int to = lines.end();
+        final int bound = lines.completeLinesEnd();
         final int[] slots = slotOfField;
-        int p = lines.start();
+        final int fields = exactFields;
+        int p = lines.position();
+        int q = p;
+        while (b[q] == ' ' || b[q] == '\t') {
+            q++;
+        }
+        if (b[q] == '#' || b[q] == '\n' || b[q] == '\r') {
+            return false; // a comment or a blank line (or a rare '\r'): the careful path skips or reads it
+        }
         int field = 0;
         int parsed = 0;
+        int newline;
         if (delimiter == WHITESPACE) {
             while (true) {
-                while (p < to && (b[p] == ' ' || b[p] == '\t')) {
+                while (b[p] == ' ' || b[p] == '\t') {
                     p++;
                 }
-                if (p >= to) {
+                if (b[p] == '\n') {
+                    newline = p;
                     break;
+                }
+                if (b[p] == '\r' && b[p + 1] == '\n') {
+                    newline = p + 1;
+                    break;
+                }
+                if (field >= fields) {
+                    return false;
                 }
                 int slot = field < slots.length ? slots[field] : -1;
                 if (slot >= 0) {
-                    int e = scanner.scan(b, p, to);
-                    if (e == p || (e < to && b[e] != ' ' && b[e] != '\t')) {
+                    int e = scanner.scan(b, p, bound);
+                    if (e == p || !endsWhitespaceField(b, e)) {
                         return false;
                     }
                     double v = scanner.value();
@@ -157,7 +179,7 @@ final class NumericRows {
                     parsed++;
                     p = e;
                 } else {
-                    while (p < to && b[p] != ' ' && b[p] != '\t') {
+                    while (!endsWhitespaceField(b, p)) {
                         p++;
                     }
                 }
@@ -166,21 +188,21 @@ final class NumericRows {
         } else {
             final byte d = delimiter;
             while (true) {
-                while (p < to && (b[p] == ' ' || b[p] == '\t')) {
+                if (field >= fields) {
+                    return false;
+                }
+                while (b[p] == ' ' || b[p] == '\t') {
                     p++;
                 }
                 int e;
                 int slot = field < slots.length ? slots[field] : -1;
                 if (slot >= 0) {
-                    e = scanner.scan(b, p, to);
+                    e = scanner.scan(b, p, bound);
                     if (e == p) {
                         return false;
                     }
-                    while (e < to && (b[e] == ' ' || b[e] == '\t')) {
+                    while (b[e] == ' ' || b[e] == '\t') {
                         e++;
-                    }
-                    if (e < to && b[e] != d) {
-                        return false;
                     }
                     double v = scanner.value();
                     if (Double.isInfinite(v)) {
@@ -190,21 +212,38 @@ final class NumericRows {
                     parsed++;
                 } else {
                     e = p;
-                    while (e < to && b[e] != d) {
+                    while (b[e] != d && b[e] != '\n') {
                         if (b[e] == '"') {
                             return false;
                         }
-                        e++;
+                        e++; // a '\r' before the '\n' ends up in this unselected field, unread
                     }
                 }
                 field++;
-                if (e >= to) {
+                if (b[e] == d) {
+                    p = e + 1;
+                } else if (b[e] == '\n') {
+                    newline = e;
                     break;
+                } else if (b[e] == '\r' && b[e + 1] == '\n') {
+                    newline = e + 1;
+                    break;
+                } else {
+                    return false;
                 }
-                p = e + 1;
             }
         }
-        return field == exactFields && parsed == select.length;
+        if (field != fields || parsed != select.length) {
+            return false;
+        }
+        lines.acceptLine(newline);
+        return true;
+    }
+
+    /** @return true if {@code b[e]} ends a field separated by spaces and tabs: a blank, or the line end */
+    private static boolean endsWhitespaceField(byte[] b, int e) {
+        byte c = b[e];
+        return c == ' ' || c == '\t' || c == '\n' || c == '\r' && b[e + 1] == '\n';
     }
 
     /** The careful path: split, check the count, check each selected field; throws on a problem. */
