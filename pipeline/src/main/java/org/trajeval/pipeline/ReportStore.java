@@ -34,8 +34,9 @@ public final class ReportStore {
          * @param runId the run id
          * @param version the report's version
          * @param reportFile the report file
+         * @param report the report as written to that file (in hand: no need to read it back)
          */
-        void committed(String runId, int version, Path reportFile);
+        void committed(String runId, int version, Path reportFile, PipelineReport report);
     }
 
     /**
@@ -52,7 +53,7 @@ public final class ReportStore {
      * it throws {@link java.io.UncheckedIOException} when the file cannot be written).
      */
     public ReportStore(Path reportsDir, Ledger ledger, Clock clock, BiConsumer<Path, String> writer) {
-        this(reportsDir, ledger, clock, writer, (id, v, f) -> { });
+        this(reportsDir, ledger, clock, writer, (id, v, f, r) -> { });
     }
 
     private ReportStore(Path reportsDir, Ledger ledger, Clock clock, BiConsumer<Path, String> writer,
@@ -116,21 +117,26 @@ public final class ReportStore {
      * @param plotsDraft a draft folder of figures ({@link RunPlots}), or null
      */
     public RunResult commit(RunJob job, ContentHash hash, EvaluationReport evaluation, Path plotsDraft) {
-        RunResult r = commitLocked(job, hash, evaluation, plotsDraft);
+        Committed c = commitLocked(job, hash, evaluation, plotsDraft);
+        RunResult r = c.result();
         if (r.outcome() == Outcome.REPORTED) {
-            listener.committed(r.runId(), r.version(), r.report());
+            listener.committed(r.runId(), r.version(), r.report(), c.report());
         }
         return r;
     }
 
-    private RunResult commitLocked(RunJob job, ContentHash hash, EvaluationReport scored, Path plotsDraft) {
+    /** A commit's result and the report it wrote (null for a duplicate). */
+    private record Committed(RunResult result, PipelineReport report) {
+    }
+
+    private Committed commitLocked(RunJob job, ContentHash hash, EvaluationReport scored, Path plotsDraft) {
         RunMetadata m = job.metadata();
         return ledger.locked(view -> {
             Optional<LedgerEntry> earlier = view.find(m.runId(), hash.content());
             if (earlier.isPresent()) {
                 int v = earlier.get().version();
-                return new RunResult(Outcome.DUPLICATE, m.runId(), v, reportFile(m.runId(), v), null,
-                        earlier.get().source());
+                return new Committed(new RunResult(Outcome.DUPLICATE, m.runId(), v, reportFile(m.runId(), v), null,
+                        earlier.get().source()), null);
             }
             int version = view.latestVersion(m.runId()) + 1;
             EvaluationReport evaluation = scored;
@@ -154,7 +160,7 @@ public final class ReportStore {
             Path file = reportFile(m.runId(), version);
             writer.accept(file, ReportJson.toJson(report));
             view.append(new LedgerEntry(m.runId(), hash.content(), version, now.toEpochMilli(), job.source()));
-            return new RunResult(Outcome.REPORTED, m.runId(), version, file, null, null);
+            return new Committed(new RunResult(Outcome.REPORTED, m.runId(), version, file, null, null), report);
         });
     }
 }

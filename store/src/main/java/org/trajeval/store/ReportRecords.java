@@ -80,25 +80,17 @@ public final class ReportRecords {
         if (!PIPELINE_SCHEMA.equals(text(n, "schema"))) {
             throw bad(source, "not a pipeline report (schema " + PIPELINE_SCHEMA + " expected)", null);
         }
-        String content = text(n, "content_sha256");
-        String processed = text(n, "processed_at");
-        if (content == null || processed == null || n.get("evaluation") == null) {
+        if (text(n, "content_sha256") == null || n.get("evaluation") == null) {
             throw bad(source, "a pipeline report needs content_sha256, processed_at and evaluation", null);
         }
-        Instant at;
-        try {
-            at = Instant.parse(processed);
-        } catch (DateTimeParseException e) {
-            throw bad(source, "processed_at must be an ISO-8601 UTC time, found \"" + processed + "\"", e);
-        }
+        processedAt(text(n, "processed_at"), source); // its refusal before the evaluation's, as always
         EvaluationReport evaluation;
         try {
             evaluation = ReportJson.parseEvaluation(n.get("evaluation").toString());
         } catch (IllegalArgumentException e) {
             throw bad(source, e.getMessage(), e);
         }
-        Map<String, Double> metrics = metrics(evaluation);
-        Map<String, String> tags = new LinkedHashMap<>(labels.tags());
+        Map<String, String> tags = new LinkedHashMap<>();
         JsonNode t = n.get("tags");
         if (t != null && t.isObject()) {
             for (Iterator<Map.Entry<String, JsonNode>> it = t.fields(); it.hasNext();) {
@@ -106,15 +98,68 @@ public final class ReportRecords {
                 tags.put(e.getKey(), e.getValue().asText());
             }
         }
-        String key = pipelineKey(content, labels);
+        Map<String, Double> factors = new LinkedHashMap<>();
+        JsonNode fn = n.get("factors");
+        if (fn != null && fn.isObject()) {
+            fn.fields().forEachRemaining(e -> factors.put(e.getKey(), e.getValue().asDouble()));
+        }
+        JsonNode res = n.get("resources");
+        Double wall = null;
+        Double mem = null;
+        if (res != null && res.isObject()) {
+            wall = res.hasNonNull("wall_time_s") ? res.get("wall_time_s").asDouble() : null;
+            mem = res.hasNonNull("peak_memory_mib") ? res.get("peak_memory_mib").asDouble() : null;
+        }
         JsonNode seed = n.get("seed");
         JsonNode version = n.get("run_version");
-        return new RunRecord(key, "pipeline", text(n, "run_id"), version == null ? null : version.asInt(), content,
-                null, labels.column("robot", text(n, "robot_id")), labels.column("site", text(n, "site")),
-                labels.column("route", text(n, "sequence")), labels.column("method", text(n, "method")),
-                labels.column("software_version", text(n, "software_version")),
-                seed == null || seed.isNull() ? labelSeed(labels) : Long.valueOf(seed.asLong()), at, true, null,
-                metrics, source, tags, description(n));
+        return fromPipeline(new PipelineFields(text(n, "run_id"), version == null ? null : version.asInt(),
+                text(n, "content_sha256"), text(n, "processed_at"), text(n, "robot_id"), text(n, "site"),
+                text(n, "sequence"), text(n, "method"), text(n, "software_version"),
+                seed == null || seed.isNull() ? null : Long.valueOf(seed.asLong()), tags, factors, wall, mem,
+                text(n, "domain"), text(n, "scenario"), text(n, "simulator"), text(n, "environment"),
+                text(n, "modality"), text(n, "ground_truth"), evaluation), source, labels);
+    }
+
+    /**
+     * One row for one pipeline report, from its fields: the report file's (above) or the report the
+     * pipeline has in hand, the same row either way.
+     *
+     * @param f the report's fields
+     * @param source the report file, for messages and the row's source
+     * @param labels labels to add (a label the report holds itself wins)
+     * @throws StoreException BAD_REPORT when content_sha256, processed_at or the evaluation is missing
+     */
+    public static RunRecord fromPipeline(PipelineFields f, String source, Labels labels) {
+        String content = f.contentSha256();
+        if (content == null || f.evaluation() == null) {
+            throw bad(source, "a pipeline report needs content_sha256, processed_at and evaluation", null);
+        }
+        Instant at = processedAt(f.processedAt(), source);
+        Map<String, Double> metrics = metrics(f.evaluation());
+        Map<String, String> tags = new LinkedHashMap<>(labels.tags());
+        if (f.tags() != null) {
+            tags.putAll(f.tags());
+        }
+        String key = pipelineKey(content, labels);
+        return new RunRecord(key, "pipeline", f.runId(), f.runVersion(), content, null,
+                labels.column("robot", f.robotId()), labels.column("site", f.site()),
+                labels.column("route", f.sequence()), labels.column("method", f.method()),
+                labels.column("software_version", f.softwareVersion()),
+                f.seed() == null ? labelSeed(labels) : f.seed(), at, true, null, metrics, source, tags,
+                new RunDescription(f.domain(), f.scenario(), f.simulator(), f.environment(), f.modality(),
+                        f.groundTruth(), factors(f.factors()), f.wallTimeS(), f.peakMemoryMib()));
+    }
+
+    /** @return {@code processed_at} as an instant; StoreException BAD_REPORT when missing or malformed */
+    private static Instant processedAt(String processed, String source) {
+        if (processed == null) {
+            throw bad(source, "a pipeline report needs content_sha256, processed_at and evaluation", null);
+        }
+        try {
+            return Instant.parse(processed);
+        } catch (DateTimeParseException e) {
+            throw bad(source, "processed_at must be an ISO-8601 UTC time, found \"" + processed + "\"", e);
+        }
     }
 
     /** @return a suite run's description: its sequence's fields and its measured resources */
@@ -126,24 +171,6 @@ public final class ReportRecords {
         return new RunDescription(q.domain(), q.scenario(), q.simulator(), q.environment(), q.modality(),
                 q.groundTruth(), factors(q.factors()), b == null ? null : b.wallTimeS(),
                 b == null ? null : b.peakMemoryMib());
-    }
-
-    /** @return a pipeline report's description fields (absent in reports before issue 18: all null) */
-    private static RunDescription description(JsonNode n) {
-        java.util.Map<String, Double> f = new java.util.TreeMap<>();
-        JsonNode fn = n.get("factors");
-        if (fn != null && fn.isObject()) {
-            fn.fields().forEachRemaining(e -> f.put(e.getKey(), e.getValue().asDouble()));
-        }
-        JsonNode res = n.get("resources");
-        Double wall = null;
-        Double mem = null;
-        if (res != null && res.isObject()) {
-            wall = res.hasNonNull("wall_time_s") ? res.get("wall_time_s").asDouble() : null;
-            mem = res.hasNonNull("peak_memory_mib") ? res.get("peak_memory_mib").asDouble() : null;
-        }
-        return new RunDescription(text(n, "domain"), text(n, "scenario"), text(n, "simulator"),
-                text(n, "environment"), text(n, "modality"), text(n, "ground_truth"), factors(f), wall, mem);
     }
 
     /** @return factor levels as {@code name=level;name=level}, or null without factors */

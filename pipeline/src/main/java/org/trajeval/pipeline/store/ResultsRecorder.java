@@ -19,9 +19,11 @@ import java.util.concurrent.atomic.AtomicLong;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.trajeval.pipeline.PipelineConfig;
+import org.trajeval.pipeline.PipelineReport;
 import org.trajeval.pipeline.ReportStore;
 import org.trajeval.pipeline.ledger.LedgerEntry;
 import org.trajeval.store.Labels;
+import org.trajeval.store.PipelineFields;
 import org.trajeval.store.ReportRecords;
 import org.trajeval.store.ResultsStore;
 import org.trajeval.store.RunRecord;
@@ -33,6 +35,12 @@ import org.trajeval.store.StoreLocation;
  * ledger line (the source of truth). Idempotent: rows are keyed by the report's content hash, so a
  * report recorded twice (by a replay, another instance or {@code trajeval db import}) is one row.
  *
+ * <p>Recording takes the report in hand (not read back from its file) and is batched: a worker only
+ * queues the report; the recorder's thread records what was queued in the last {@link #FLUSH_MS} ms
+ * in one transaction (a worker that finds {@link #BATCH} queued records them itself). A report
+ * whose ledger line is durable but whose row is not (a crash, a store down) is recorded by the
+ * replay from the ledger below: exactly once, as rows are keyed.
+ *
  * <p>A store that is down delays recording but loses nothing: the failure is logged once, the
  * lag gauge counts the reports not yet recorded, and a background task replays the backlog from
  * the ledger every {@code store.retry_interval_s} until the store answers. At start-up the same
@@ -42,6 +50,8 @@ import org.trajeval.store.StoreLocation;
 public final class ResultsRecorder implements ReportStore.CommitListener, AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(ResultsRecorder.class);
     private static final int BATCH = 500;
+    /** How long a committed report may wait for others to share its transaction (ms). */
+    static final long FLUSH_MS = 100;
 
     private final StoreLocation location;
     private final ReportStore reports;
@@ -51,6 +61,13 @@ public final class ResultsRecorder implements ReportStore.CommitListener, AutoCl
     private ResultsStore store;
     private boolean down;
     private boolean backlog = true;
+    /** Committed reports not yet recorded, guarded by itself (not by this: workers never wait for the store). */
+    private final List<Pending> queued = new ArrayList<>();
+    private boolean flushScheduled;
+
+    /** A committed report waiting to be recorded. */
+    private record Pending(Path file, PipelineReport report) {
+    }
 
     private ResultsRecorder(StoreLocation location, ReportStore reports, AtomicLong lag, Clock clock,
             Duration retry) {
@@ -97,19 +114,66 @@ public final class ResultsRecorder implements ReportStore.CommitListener, AutoCl
     }
 
     @Override
-    public void committed(String runId, int version, Path reportFile) {
+    public void committed(String runId, int version, Path reportFile, PipelineReport report) {
         lag.incrementAndGet();
-        synchronized (this) {
-            if (backlog) {
-                return; // the replay will take it, in ledger order
-            }
+        boolean schedule;
+        boolean full;
+        synchronized (queued) {
+            queued.add(new Pending(reportFile, report));
+            full = queued.size() >= BATCH;
+            schedule = !full && !flushScheduled;
+            flushScheduled |= schedule;
+        }
+        if (full) {
+            flush(); // the store lags behind the workers: record the batch here, holding this worker back
+        } else if (schedule) {
             try {
-                record(List.of(read(reportFile)));
-                lag.decrementAndGet();
-            } catch (StoreException | IOException e) {
-                wentDown(e);
+                replayer.schedule(this::flush, FLUSH_MS, TimeUnit.MILLISECONDS);
+            } catch (java.util.concurrent.RejectedExecutionException closing) {
+                flush();
             }
         }
+    }
+
+    /**
+     * Records the queued reports in one transaction. While the store is behind (down, or not yet
+     * caught up at start-up) they are left to the replay, which reads them from the ledger, where
+     * their lines are durable already.
+     */
+    private void flush() {
+        List<Pending> batch;
+        synchronized (queued) {
+            batch = new ArrayList<>(queued);
+            queued.clear();
+            flushScheduled = false;
+        }
+        if (batch.isEmpty()) {
+            return;
+        }
+        synchronized (this) {
+            if (backlog) {
+                return; // the replay will take them, in ledger order
+            }
+            try {
+                List<RunRecord> records = new ArrayList<>(batch.size());
+                for (Pending p : batch) {
+                    records.add(ReportRecords.fromPipeline(fields(p.report()), p.file().toString(), Labels.none()));
+                }
+                record(records);
+                lag.addAndGet(-batch.size());
+            } catch (RuntimeException e) {
+                wentDown(e); // the replay from the ledger records them (or says why it cannot)
+            }
+        }
+    }
+
+    /** @return what the store keeps of a report in hand: the fields its file holds */
+    static PipelineFields fields(PipelineReport r) {
+        return new PipelineFields(r.runId(), r.runVersion(), r.contentSha256(), r.processedAt(), r.robotId(),
+                r.site(), r.sequence(), r.method(), r.softwareVersion(), r.seed(), r.tags(), r.factors(),
+                r.resources() == null ? null : r.resources().wallTimeS(),
+                r.resources() == null ? null : r.resources().peakMemoryMib(), r.domain(), r.scenario(),
+                r.simulator(), r.environment(), r.modality(), r.groundTruth(), r.evaluation());
     }
 
     /** Replays the ledger's reports the store lacks, when behind; the scheduled task. */
@@ -205,6 +269,7 @@ public final class ResultsRecorder implements ReportStore.CommitListener, AutoCl
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
+        flush();
         synchronized (this) {
             if (backlog) {
                 replay();
