@@ -6,6 +6,7 @@ import org.trajeval.core.InputText;
 import org.trajeval.core.Version;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 
 /** The {@code trajeval} command: scores trajectories and benchmark suites. */
 @Command(name = "trajeval", mixinStandardHelpOptions = true, versionProvider = TrajevalCommand.VersionProvider.class,
@@ -29,13 +30,33 @@ public final class TrajevalCommand implements Runnable {
 
     /** Entry point of the launcher. */
     public static void main(String[] args) {
-        System.exit(newCommandLine().execute(args));
+        System.exit(newCommandLine(args).execute(args));
     }
 
     /** @return the configured command line (used by tests with their own out/err writers) */
     public static CommandLine newCommandLine() {
         CommandLine cl = new CommandLine(new TrajevalCommand());
         SettingOptions.addTo(cl.getSubcommands().get("eval").getCommandSpec());
+        return configured(cl);
+    }
+
+    /**
+     * The command line for {@code args}: for {@code trajeval eval ...} one that knows only
+     * {@code eval}, otherwise {@link #newCommandLine()}. picocli builds the model of every
+     * subcommand it is given by reflection (their options, converters, enum types: about 0.1 s of
+     * a cold start); an eval parses, prints help and errors exactly as with the whole command.
+     */
+    public static CommandLine newCommandLine(String[] args) {
+        if (args.length == 0 || !args[0].equals("eval")) {
+            return newCommandLine();
+        }
+        CommandLine cl = new CommandLine(CommandSpec.wrapWithoutInspection(new TrajevalCommand()).name("trajeval"));
+        cl.addSubcommand("eval", new EvalCommand());
+        SettingOptions.addTo(cl.getSubcommands().get("eval").getCommandSpec());
+        return configured(cl);
+    }
+
+    private static CommandLine configured(CommandLine cl) {
         cl.setExecutionExceptionHandler(new ErrorHandler());
         cl.setParameterExceptionHandler(TrajevalCommand::usageError);
         cl.setExitCodeExceptionMapper(t -> t instanceof InputException ? ExitCodes.BAD_INPUT : ExitCodes.INTERNAL);
