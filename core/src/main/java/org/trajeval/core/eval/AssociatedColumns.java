@@ -87,6 +87,15 @@ final class AssociatedColumns implements PosePairs {
         }
     }
 
+    /** As {@link #referenceRotation(int, double[], int)}, into {@code out[0..9)} with this thread's scratch. */
+    private void referenceRotation(int k, double[] out, Scratch s) {
+        if (interpolated != null) {
+            interpolated.rotation(k, out, 0, s.cursor());
+        } else {
+            ref.rotation(refIndex[k], out, 0);
+        }
+    }
+
     @Override
     public void estimateRotation(int k, double[] out, int o) {
         est.rotation(estAt(k), out, o);
@@ -125,6 +134,15 @@ final class AssociatedColumns implements PosePairs {
         double transError;
         /** Rotation error of the last pose or pair computed (rad). */
         double rotError;
+        private InterpolatedReference.Cursor cursor;
+
+        /** @return the scratch and cache of an interpolated reference's rotations (made on first use) */
+        InterpolatedReference.Cursor cursor() {
+            if (cursor == null) {
+                cursor = new InterpolatedReference.Cursor();
+            }
+            return cursor;
+        }
     }
 
     /** Writes the aligned estimate pose k: position into {@code p[0..3)} (m), rotation into {@code r} (9). */
@@ -163,7 +181,7 @@ final class AssociatedColumns implements PosePairs {
         double dy = p[1] - refPositions.y(k);
         double dz = p[2] - refPositions.z(k);
         s.transError = Math.sqrt(dx * dx + dy * dy + dz * dz);
-        referenceRotation(k, s.rj, 0);
+        referenceRotation(k, s.rj, s);
         double[] re = s.ri;
         double[] rr = s.rj;
         double[] e = s.e;
@@ -180,8 +198,8 @@ final class AssociatedColumns implements PosePairs {
      * t: e[9..12)), |trans(E)| (m) into {@code s.transError}, its angle (rad) into {@code s.rotError}.
      */
     void rpe(int i, int j, Scratch s) {
-        referenceRotation(i, s.ri, 0);
-        referenceRotation(j, s.rj, 0);
+        referenceRotation(i, s.ri, s);
+        referenceRotation(j, s.rj, s);
         RelativeMotion.inverseTimes(s.ri, refPositions.x(i), refPositions.y(i), refPositions.z(i), s.rj,
                 refPositions.x(j), refPositions.y(j), refPositions.z(j), s.q);
         alignedPose(i, s.pi, s.ri, s.rp);
