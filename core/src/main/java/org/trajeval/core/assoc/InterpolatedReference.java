@@ -142,6 +142,11 @@ public final class InterpolatedReference implements PositionColumns {
         return n;
     }
 
+    /** @return true for an SE(3) reference (rotations computed on demand by a slerp), false for planar data */
+    public boolean isSpatial() {
+        return spatialRef != null;
+    }
+
     // positions of SE(3) data: a + f (b - a) of the segment's end poses, the expression of evo's
     // linear interpolation (and of this class when it stored them)
 

@@ -26,10 +26,10 @@ import org.trajeval.core.traj.Trajectory;
  * numbers are the general path's ({@link Evaluator#run}, which also keeps the per-pose data), bit
  * for bit for the per-pose errors; planar data is the case whose rotations are about +z.
  *
- * <p>Memory on top of the inputs: the reference interpolated at the estimate stamps (planar 24 B,
- * SE(3) 56 B per pose; none for nearest matching, 8 B of index maps instead) and two error arrays
- * (translation and rotation, 16 B per pose) that the RPE and then the ATE fill; every RPE pair and
- * every ATE pose is computed once.
+ * <p>Memory on top of the inputs: the reference interpolated at the estimate stamps (planar 24 B;
+ * SE(3) 20 B per pose: its bracket and the ATE rotation errors the RPE computes; none for nearest
+ * matching, 8 B of index maps instead) and two error arrays (16 B per pose) that the RPE and then
+ * the ATE fill; every RPE pair and every ATE pose is computed once.
  */
 final class ColumnarEvaluator {
     private ColumnarEvaluator() {
