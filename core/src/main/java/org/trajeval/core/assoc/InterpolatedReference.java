@@ -1,5 +1,6 @@
 package org.trajeval.core.assoc;
 
+import java.util.Arrays;
 import java.util.function.IntToDoubleFunction;
 import org.trajeval.core.geom.Rotations;
 import org.trajeval.core.geom.StrictAtan2;
@@ -9,9 +10,12 @@ import org.trajeval.core.traj.PositionColumns;
 import org.trajeval.core.traj.SpatialTrajectory;
 
 /**
- * A reference interpolated at increasing query stamps, held column-wise: positions (m) and, for
- * planar data, the yaw (rad; 24 B per pose), else the unit quaternion (56 B per pose); rotation
- * matrices are derived on demand. Two rules:
+ * A reference interpolated at increasing query stamps, held column-wise. Planar data: positions
+ * (m) and the yaw (rad), 24 B per pose. SE(3) data: only the bracket, i.e. the segment index and
+ * the fraction f (12 B per pose instead of 56 B for positions and the slerped quaternion);
+ * positions and rotations are computed on demand from the reference's own columns by the same
+ * expressions as when they were stored, so every value is bit for bit the stored one. Rotation
+ * matrices are derived on demand in both cases. Two rules:
  * <ul>
  * <li>planar (the lesson's): segment = first reference pose with t &gt;= query in [1, n-1],
  *     f = (t - t_prev) / (t_next - t_prev) clamped to [0, 1], x, y linear, yaw through its sine
@@ -22,25 +26,33 @@ import org.trajeval.core.traj.SpatialTrajectory;
  *     along the shorter arc. Queries outside the span are clamped to the end poses.</li>
  * </ul>
  * Filled chunk by chunk ({@link #fill}): each chunk finds its first segment by binary search, so
- * chunks are independent and the result does not depend on how the range is cut.
+ * chunks are independent and the result does not depend on how the range is cut. An SE(3)
+ * rotation costs a slerp and a quaternion-to-matrix conversion; a {@link Cursor} (one per thread)
+ * keeps the last {@value Cursor#SLOTS} matrices computed, so a pose met again within that many
+ * poses (the RPE's start pose, met first as an end pose) is not recomputed.
  */
 public final class InterpolatedReference implements PositionColumns {
     private final PlanarTrajectory planarRef;
     private final SpatialTrajectory spatialRef;
     private final double[] x;
     private final double[] y;
-    private final double[] z;
     private final double[] yaw;
-    private final double[] q;
+    /** SE(3): the segment of pose k is reference poses (seg[k] - 1, seg[k]). */
+    private final int[] seg;
+    /** SE(3): the fraction of pose k along its segment, in [0, 1]. */
+    private final double[] frac;
+    private final int n;
 
     private InterpolatedReference(PlanarTrajectory planarRef, SpatialTrajectory spatialRef, int n) {
         this.planarRef = planarRef;
         this.spatialRef = spatialRef;
-        this.x = new double[n];
-        this.y = new double[n];
-        this.z = planarRef != null ? null : new double[n];
-        this.yaw = planarRef != null ? new double[n] : null;
-        this.q = planarRef != null ? null : new double[4 * n];
+        this.n = n;
+        boolean planar = planarRef != null;
+        this.x = planar ? new double[n] : null;
+        this.y = planar ? new double[n] : null;
+        this.yaw = planar ? new double[n] : null;
+        this.seg = planar ? null : new int[n];
+        this.frac = planar ? null : new double[n];
     }
 
     /** @return room for n poses of a planar reference, interpolated by the lesson's rule */
@@ -111,46 +123,59 @@ public final class InterpolatedReference implements PositionColumns {
     private void fillSpatial(IntToDoubleFunction stamp, int from, int to) {
         SpatialTrajectory ref = spatialRef;
         int nr = ref.size();
-        double[] q0 = new double[4];
-        double[] q1 = new double[4];
         int idx = ref.firstAtOrAfter(stamp.applyAsDouble(from), 0, nr);
         for (int k = from; k < to; k++) {
             double t = stamp.applyAsDouble(k);
             while (idx < nr && ref.t(idx) < t) {
                 idx++;
             }
-            int seg = Math.max(1, Math.min(nr - 1, idx));
-            double tPrev = ref.t(seg - 1);
-            double dt = ref.t(seg) - tPrev;
+            int s = Math.max(1, Math.min(nr - 1, idx));
+            double tPrev = ref.t(s - 1);
+            double dt = ref.t(s) - tPrev;
             double f = dt > 0.0 ? (t - tPrev) / dt : 0.0;
-            f = Math.max(0.0, Math.min(1.0, f));
-            x[k] = ref.x(seg - 1) + f * (ref.x(seg) - ref.x(seg - 1));
-            y[k] = ref.y(seg - 1) + f * (ref.y(seg) - ref.y(seg - 1));
-            z[k] = ref.z(seg - 1) + f * (ref.z(seg) - ref.z(seg - 1));
-            ref.quaternion(seg - 1, q0);
-            ref.quaternion(seg, q1);
-            Rotations.slerp(q0, q1, f, q, 4 * k);
+            seg[k] = s;
+            frac[k] = Math.max(0.0, Math.min(1.0, f));
         }
     }
 
     /** @return number of poses */
     public int size() {
-        return x.length;
+        return n;
     }
+
+    /** @return true for an SE(3) reference (rotations computed on demand by a slerp), false for planar data */
+    public boolean isSpatial() {
+        return spatialRef != null;
+    }
+
+    // positions of SE(3) data: a + f (b - a) of the segment's end poses, the expression of evo's
+    // linear interpolation (and of this class when it stored them)
 
     @Override
     public double x(int k) {
-        return x[k];
+        if (x != null) {
+            return x[k];
+        }
+        int s = seg[k];
+        return spatialRef.x(s - 1) + frac[k] * (spatialRef.x(s) - spatialRef.x(s - 1));
     }
 
     @Override
     public double y(int k) {
-        return y[k];
+        if (y != null) {
+            return y[k];
+        }
+        int s = seg[k];
+        return spatialRef.y(s - 1) + frac[k] * (spatialRef.y(s) - spatialRef.y(s - 1));
     }
 
     @Override
     public double z(int k) {
-        return z == null ? 0.0 : z[k];
+        if (x != null) {
+            return 0.0;
+        }
+        int s = seg[k];
+        return spatialRef.z(s - 1) + frac[k] * (spatialRef.z(s) - spatialRef.z(s - 1));
     }
 
     /** @return the interpolated yaw of pose k (rad); planar references only */
@@ -163,22 +188,77 @@ public final class InterpolatedReference implements PositionColumns {
         return yaw != null;
     }
 
-    /** Writes the rotation matrix of pose k (row-major) into {@code out[o..o+9)}. */
+    /** Writes the rotation matrix of pose k (row-major) into {@code out[o..o+9)} (allocates scratch for SE(3)). */
     public void rotation(int k, double[] out, int o) {
+        rotation(k, out, o, yaw != null ? null : new Cursor());
+    }
+
+    /**
+     * Writes the rotation matrix of pose k (row-major) into {@code out[o..o+9)}: planar data
+     * {@link Rotations#aboutZ} of the yaw, SE(3) data {@link Rotations#fromQuaternion} of the
+     * slerp of the segment's quaternions, taken from the cursor's cache when it holds pose k.
+     *
+     * @param cursor this thread's scratch and cache (unused for planar data)
+     */
+    public void rotation(int k, double[] out, int o, Cursor cursor) {
         if (yaw != null) {
             Rotations.aboutZ(yaw[k], out, o);
-        } else {
-            Rotations.fromQuaternion(q[4 * k], q[4 * k + 1], q[4 * k + 2], q[4 * k + 3], out, o);
+            return;
         }
+        int slot = k & (Cursor.SLOTS - 1);
+        double[] cached = cursor.matrices;
+        if (cursor.owner != this) {
+            cursor.clear(this);
+        } else if (cursor.pose[slot] == k) {
+            System.arraycopy(cached, 9 * slot, out, o, 9);
+            return;
+        }
+        int s = seg[k];
+        double[] q0 = cursor.q0;
+        double[] q1 = cursor.q1;
+        double[] q = cursor.q;
+        spatialRef.quaternion(s - 1, q0);
+        spatialRef.quaternion(s, q1);
+        Rotations.slerp(q0, q1, frac[k], q, 0);
+        Rotations.fromQuaternion(q[0], q[1], q[2], q[3], cached, 9 * slot);
+        cursor.pose[slot] = k;
+        System.arraycopy(cached, 9 * slot, out, o, 9);
     }
 
     /** @return the poses as a materialised sequence (rotation matrices, z = 0 for planar data) */
     public PoseSequence toPoses() {
-        int n = x.length;
+        double[] px = new double[n];
+        double[] py = new double[n];
+        double[] pz = new double[n];
         double[] r = new double[9 * n];
+        Cursor cursor = new Cursor();
         for (int k = 0; k < n; k++) {
-            rotation(k, r, 9 * k);
+            px[k] = x(k);
+            py[k] = y(k);
+            pz[k] = z(k);
+            rotation(k, r, 9 * k, cursor);
         }
-        return PoseSequence.of(x.clone(), y.clone(), z == null ? new double[n] : z.clone(), r);
+        return PoseSequence.of(px, py, pz, r);
+    }
+
+    /**
+     * One thread's scratch for {@link #rotation(int, double[], int, Cursor)} and a direct-mapped
+     * cache of the last SE(3) rotation matrices it computed (pose k in slot k mod {@value #SLOTS};
+     * 74 KB). Bound to one reference at a time: used with another, it forgets what it held.
+     */
+    public static final class Cursor {
+        /** Number of cached matrices (a power of two). */
+        public static final int SLOTS = 1024;
+        private final double[] q0 = new double[4];
+        private final double[] q1 = new double[4];
+        private final double[] q = new double[4];
+        private final double[] matrices = new double[9 * SLOTS];
+        private final int[] pose = new int[SLOTS];
+        private InterpolatedReference owner;
+
+        private void clear(InterpolatedReference reference) {
+            Arrays.fill(pose, -1);
+            owner = reference;
+        }
     }
 }

@@ -1,5 +1,6 @@
 package org.trajeval.core.eval;
 
+import java.util.Arrays;
 import org.trajeval.core.align.AlignmentModel;
 import org.trajeval.core.align.AlignmentTransform;
 import org.trajeval.core.align.PosePairs;
@@ -35,6 +36,12 @@ final class AssociatedColumns implements PosePairs {
     private final double off;
     private final PositionColumns refPositions;
     private final PositionColumns estPositions;
+    /**
+     * ATE rotation errors (rad) computed by {@link #rpe} for its start pose i while the reference
+     * rotation of i is in the thread's cache, NaN where not yet computed; only for an SE(3)
+     * interpolated reference, whose rotations cost a slerp each (8 B per pose against a second slerp).
+     */
+    private final double[] ateRotation;
     private boolean aligned;
     private final double[] rot = new double[9];
     private final double[] trans = new double[3];
@@ -54,6 +61,12 @@ final class AssociatedColumns implements PosePairs {
         this.off = off;
         this.refPositions = interpolated != null ? interpolated : new Mapped(ref, refIndex, 0);
         this.estPositions = new Mapped(est, estIndex, k0);
+        if (interpolated != null && interpolated.isSpatial()) {
+            this.ateRotation = new double[m];
+            Arrays.fill(ateRotation, Double.NaN);
+        } else {
+            this.ateRotation = null;
+        }
     }
 
     /** Estimate poses [k0, k0 + m) paired with the reference interpolated at their stamps (filled by the caller). */
@@ -89,6 +102,15 @@ final class AssociatedColumns implements PosePairs {
             interpolated.rotation(k, out, o);
         } else {
             ref.rotation(refIndex[k], out, o);
+        }
+    }
+
+    /** As {@link #referenceRotation(int, double[], int)}, into {@code out[0..9)} with this thread's scratch. */
+    private void referenceRotation(int k, double[] out, Scratch s) {
+        if (interpolated != null) {
+            interpolated.rotation(k, out, 0, s.cursor());
+        } else {
+            ref.rotation(refIndex[k], out, 0);
         }
     }
 
@@ -139,6 +161,7 @@ final class AssociatedColumns implements PosePairs {
         final double[] q = new double[12];
         final double[] p = new double[12];
         final double[] e = new double[12];
+        final double[] a = new double[9];
         /** Scratch of {@link Rotations#angle(double[], int, double[])}. */
         final double[] quat = new double[4];
         /** Translation error of the last pose or pair computed (m). */
@@ -154,16 +177,41 @@ final class AssociatedColumns implements PosePairs {
             }
             return window;
         }
+
+        private InterpolatedReference.Cursor cursor;
+
+        /** @return the scratch and cache of an interpolated reference's rotations (made on first use) */
+        InterpolatedReference.Cursor cursor() {
+            if (cursor == null) {
+                cursor = new InterpolatedReference.Cursor();
+            }
+            return cursor;
+        }
     }
 
     /** Writes the aligned estimate pose k: position into {@code p[0..3)} (m), rotation into {@code r} (9). */
     private void alignedPose(int k, double[] p, double[] r, double[] rp) {
         int i = estAt(k);
+        alignedPosition(i, p);
+        if (!aligned) {
+            est.rotation(i, r, 0);
+            return;
+        }
+        double[] mr = rot;
+        est.rotation(i, rp, 0);
+        for (int row = 0; row < 3; row++) {
+            for (int col = 0; col < 3; col++) {
+                r[3 * row + col] = mr[3 * row] * rp[col] + mr[3 * row + 1] * rp[3 + col] + mr[3 * row + 2] * rp[6 + col];
+            }
+        }
+    }
+
+    /** Writes the aligned position of estimate pose i (its own index) into {@code p[0..3)} (m). */
+    private void alignedPosition(int i, double[] p) {
         if (!aligned) {
             p[0] = est.x(i);
             p[1] = est.y(i);
             p[2] = est.z(i);
-            est.rotation(i, r, 0);
             return;
         }
         double px = scale * est.x(i);
@@ -173,12 +221,6 @@ final class AssociatedColumns implements PosePairs {
         p[0] = mr[0] * px + mr[1] * py + mr[2] * pz + trans[0];
         p[1] = mr[3] * px + mr[4] * py + mr[5] * pz + trans[1];
         p[2] = mr[6] * px + mr[7] * py + mr[8] * pz + trans[2];
-        est.rotation(i, rp, 0);
-        for (int row = 0; row < 3; row++) {
-            for (int col = 0; col < 3; col++) {
-                r[3 * row + col] = mr[3 * row] * rp[col] + mr[3 * row + 1] * rp[3 + col] + mr[3 * row + 2] * rp[6 + col];
-            }
-        }
     }
 
     /**
@@ -190,21 +232,30 @@ final class AssociatedColumns implements PosePairs {
             return;
         }
         double[] p = s.pi;
-        alignedPose(k, p, s.ri, s.rp);
+        double known = ateRotation == null ? Double.NaN : ateRotation[k];
+        if (Double.isNaN(known)) {
+            alignedPose(k, p, s.ri, s.rp);
+        } else {
+            alignedPosition(estAt(k), p);
+        }
         double dx = p[0] - refPositions.x(k);
         double dy = p[1] - refPositions.y(k);
         double dz = p[2] - refPositions.z(k);
         s.transError = Math.sqrt(dx * dx + dy * dy + dz * dz);
-        referenceRotation(k, s.rj, 0);
-        double[] re = s.ri;
+        s.rotError = Double.isNaN(known) ? rotationError(k, s.ri, s) : known;
+    }
+
+    /** @return the angle of R'^T R_ref,k (rad), R' at {@code re}: the ATE's rotation error of pair k */
+    private double rotationError(int k, double[] re, Scratch s) {
+        referenceRotation(k, s.rj, s);
         double[] rr = s.rj;
-        double[] e = s.e;
+        double[] e = s.a;
         for (int r = 0; r < 3; r++) {
             for (int c = 0; c < 3; c++) {
                 e[3 * r + c] = re[r] * rr[c] + re[3 + r] * rr[3 + c] + re[6 + r] * rr[6 + c];
             }
         }
-        s.rotError = Rotations.angle(e, 0, s.quat);
+        return Rotations.angle(e, 0, s.quat);
     }
 
     /**
@@ -215,8 +266,8 @@ final class AssociatedColumns implements PosePairs {
         if (planar != null && planar.rpe(i, j, s)) {
             return;
         }
-        referenceRotation(i, s.ri, 0);
-        referenceRotation(j, s.rj, 0);
+        referenceRotation(i, s.ri, s);
+        referenceRotation(j, s.rj, s);
         RelativeMotion.inverseTimes(s.ri, refPositions.x(i), refPositions.y(i), refPositions.z(i), s.rj,
                 refPositions.x(j), refPositions.y(j), refPositions.z(j), s.q);
         alignedPose(i, s.pi, s.ri, s.rp);
@@ -228,6 +279,10 @@ final class AssociatedColumns implements PosePairs {
         RelativeMotion.inverseTimes(q, q[9], q[10], q[11], p, p[9], p[10], p[11], e);
         s.transError = Math.sqrt(e[9] * e[9] + e[10] * e[10] + e[11] * e[11]);
         s.rotError = Rotations.angle(e, 0, s.quat);
+        if (ateRotation != null) {
+            // s.ri holds R'_i; the reference rotation of i is still in the thread's cache
+            ateRotation[i] = rotationError(i, s.ri, s);
+        }
     }
 
     /** @return the length of the associated reference path from pose k to k + 1 (m) */

@@ -27,10 +27,10 @@ import org.trajeval.core.traj.Trajectory;
  * for bit for the per-pose errors. Planar pairs aligned about +z (every model but se3/sim3 fits
  * that are not) take 2x2 blocks of (cos, sin) of the yaws instead of 3x3 matrices ({@link PlanarErrors}).
  *
- * <p>Memory on top of the inputs: the reference interpolated at the estimate stamps (planar 24 B,
- * SE(3) 56 B per pose; none for nearest matching, 8 B of index maps instead) and two error arrays
- * (translation and rotation, 16 B per pose) that the RPE and then the ATE fill; every RPE pair and
- * every ATE pose is computed once.
+ * <p>Memory on top of the inputs: the reference interpolated at the estimate stamps (planar 24 B;
+ * SE(3) 20 B per pose: its bracket and the ATE rotation errors the RPE computes; none for nearest
+ * matching, 8 B of index maps instead) and two error arrays (16 B per pose) that the RPE and then
+ * the ATE fill; every RPE pair and every ATE pose is computed once.
  */
 final class ColumnarEvaluator {
     private ColumnarEvaluator() {

@@ -1,0 +1,149 @@
+package org.trajeval.core.assoc;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.Arrays;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+import org.trajeval.core.geom.Rotations;
+import org.trajeval.core.traj.PoseSequence;
+import org.trajeval.core.traj.SpatialTrajectory;
+
+/**
+ * The SE(3) interpolated reference keeps only the bracket (segment, fraction) and computes
+ * positions and rotations on demand, through a per-thread cache of matrices: every value must be
+ * bit for bit the one evo's rule gives when computed directly (segment by a linear scan, f = (t -
+ * t_a) / (t_b - t_a) clamped to [0, 1], 0 for a zero-length segment, positions a + f (b - a),
+ * rotation the matrix of the slerp), whatever order the poses are asked in and however the
+ * cache's slots collide.
+ */
+class InterpolatedReferenceTest {
+
+    @Test
+    void onDemandPosesEqualTheDirectlyInterpolatedPosesBitForBit() {
+        Random rnd = new Random(515);
+        SpatialTrajectory ref = randomReference(rnd, 3000);
+        double[] stamps = queryStamps(rnd, ref, 5000);
+        InterpolatedReference interp = InterpolatedReference.spatial(ref, stamps.length);
+        // filled in uneven chunks, as the evaluator's threads do
+        for (int from = 0; from < stamps.length; from += 777) {
+            interp.fill(k -> stamps[k], from, Math.min(stamps.length, from + 777));
+        }
+        InterpolatedReference.Cursor cursor = new InterpolatedReference.Cursor();
+        double[] r = new double[9];
+        double[] expected = new double[12];
+        // sequential, then backwards, then pose k and k + SLOTS alternately (the same cache slot)
+        for (int pass = 0; pass < 3; pass++) {
+            for (int i = 0; i < stamps.length; i++) {
+                int k = pass == 0 ? i : pass == 1 ? stamps.length - 1 - i
+                        : (i % 2 == 0 ? i / 2 : Math.min(stamps.length - 1, i / 2 + InterpolatedReference.Cursor.SLOTS));
+                direct(ref, stamps[k], expected);
+                interp.rotation(k, r, 0, cursor);
+                for (int c = 0; c < 9; c++) {
+                    assertBits(expected[3 + c], r[c], "rotation " + c + " of pose " + k + ", pass " + pass);
+                }
+                assertBits(expected[0], interp.x(k), "x of pose " + k);
+                assertBits(expected[1], interp.y(k), "y of pose " + k);
+                assertBits(expected[2], interp.z(k), "z of pose " + k);
+            }
+        }
+    }
+
+    @Test
+    void aCursorMovedToAnotherReferenceForgetsTheFirstOnesRotations() {
+        Random rnd = new Random(516);
+        SpatialTrajectory a = randomReference(rnd, 400);
+        SpatialTrajectory b = randomReference(rnd, 400);
+        double[] stamps = queryStamps(rnd, a, 300);
+        InterpolatedReference ia = InterpolatedReference.spatial(a, stamps.length);
+        InterpolatedReference ib = InterpolatedReference.spatial(b, stamps.length);
+        ia.fill(k -> stamps[k], 0, stamps.length);
+        ib.fill(k -> stamps[k], 0, stamps.length);
+        InterpolatedReference.Cursor cursor = new InterpolatedReference.Cursor();
+        double[] r = new double[9];
+        double[] expected = new double[12];
+        for (int k = 0; k < stamps.length; k++) {
+            ia.rotation(k, r, 0, cursor);
+            ib.rotation(k, r, 0, cursor);
+            direct(b, stamps[k], expected);
+            for (int c = 0; c < 9; c++) {
+                assertBits(expected[3 + c], r[c], "rotation " + c + " of pose " + k + " of the second reference");
+            }
+        }
+    }
+
+    @Test
+    void materialisedPosesEqualTheOnDemandOnes() {
+        Random rnd = new Random(517);
+        SpatialTrajectory ref = randomReference(rnd, 500);
+        double[] stamps = queryStamps(rnd, ref, 700);
+        PoseSequence poses = InterpolatedReference.spatialAt(ref, stamps);
+        double[] r = new double[9];
+        double[] expected = new double[12];
+        for (int k = 0; k < stamps.length; k++) {
+            direct(ref, stamps[k], expected);
+            poses.rotation(k, r, 0);
+            assertBits(expected[0], poses.x(k), "x of pose " + k);
+            assertBits(expected[2], poses.z(k), "z of pose " + k);
+            for (int c = 0; c < 9; c++) {
+                assertBits(expected[3 + c], r[c], "rotation " + c + " of pose " + k);
+            }
+        }
+    }
+
+    /** evo's rule computed directly: x, y, z into out[0..3), the rotation matrix into out[3..12). */
+    private static void direct(SpatialTrajectory ref, double t, double[] out) {
+        int nr = ref.size();
+        int idx = 0;
+        while (idx < nr && ref.t(idx) < t) {
+            idx++;
+        }
+        int s = Math.max(1, Math.min(nr - 1, idx));
+        double dt = ref.t(s) - ref.t(s - 1);
+        double f = dt > 0.0 ? (t - ref.t(s - 1)) / dt : 0.0;
+        f = Math.max(0.0, Math.min(1.0, f));
+        out[0] = ref.x(s - 1) + f * (ref.x(s) - ref.x(s - 1));
+        out[1] = ref.y(s - 1) + f * (ref.y(s) - ref.y(s - 1));
+        out[2] = ref.z(s - 1) + f * (ref.z(s) - ref.z(s - 1));
+        double[] q0 = new double[4];
+        double[] q1 = new double[4];
+        double[] q = new double[4];
+        ref.quaternion(s - 1, q0);
+        ref.quaternion(s, q1);
+        Rotations.slerp(q0, q1, f, q);
+        Rotations.fromQuaternion(q[0], q[1], q[2], q[3], out, 3);
+    }
+
+    /** A random walk with random rotations, some repeated stamps (zero-length segments). */
+    private static SpatialTrajectory randomReference(Random rnd, int n) {
+        double[][] c = new double[8][n];
+        double t = 10.0;
+        for (int i = 0; i < n; i++) {
+            t += rnd.nextInt(20) == 0 ? 0.0 : 0.01 + 0.05 * rnd.nextDouble();
+            c[0][i] = t;
+            for (int a = 1; a < 4; a++) {
+                c[a][i] = (i == 0 ? 0.0 : c[a][i - 1]) + rnd.nextGaussian();
+            }
+            for (int a = 4; a < 8; a++) {
+                c[a][i] = rnd.nextGaussian();
+            }
+        }
+        return SpatialTrajectory.of(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]);
+    }
+
+    /** Increasing stamps from before the reference's start to after its end, some on its own stamps. */
+    private static double[] queryStamps(Random rnd, SpatialTrajectory ref, int n) {
+        double t0 = ref.t(0) - 0.5;
+        double span = ref.t(ref.size() - 1) + 0.5 - t0;
+        double[] s = new double[n];
+        for (int k = 0; k < n; k++) {
+            s[k] = rnd.nextInt(10) == 0 ? ref.t(rnd.nextInt(ref.size())) : t0 + span * rnd.nextDouble();
+        }
+        Arrays.sort(s);
+        return s;
+    }
+
+    private static void assertBits(double expected, double actual, String what) {
+        assertEquals(Double.doubleToRawLongBits(expected), Double.doubleToRawLongBits(actual), what);
+    }
+}
