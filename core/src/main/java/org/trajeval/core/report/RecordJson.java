@@ -44,12 +44,51 @@ import java.util.Map;
 final class RecordJson {
     private static final JsonFactory FACTORY = new JsonFactory();
 
+    /** Whether a type is written here: derived from the class alone, so computed once per class. */
+    private static final ClassValue<Boolean> SUPPORTED = new ClassValue<>() {
+        @Override
+        protected Boolean computeValue(Class<?> type) {
+            return supportsRecord(type, new ArrayList<>());
+        }
+    };
+
+    /** The properties of a supported record type in writing order, computed once per class. */
+    private static final ClassValue<Layout> LAYOUTS = new ClassValue<>() {
+        @Override
+        protected Layout computeValue(Class<?> type) {
+            return Layout.of(type);
+        }
+    };
+
     private RecordJson() {
+    }
+
+    /** A supported record type's JSON object: its property names and getters in order, and its null rule. */
+    private record Layout(boolean leaveOutNulls, String[] names, Method[] getters) {
+        static Layout of(Class<?> type) {
+            Map<String, Method> getters = new LinkedHashMap<>();
+            for (RecordComponent c : type.getRecordComponents()) {
+                getters.put(c.getAccessor().getAnnotation(JsonProperty.class).value(), c.getAccessor());
+            }
+            for (Method m : type.getMethods()) {
+                JsonProperty p = m.getAnnotation(JsonProperty.class);
+                if (p != null && m.getParameterCount() == 0 && !Modifier.isStatic(m.getModifiers())) {
+                    getters.putIfAbsent(p.value(), m);
+                }
+            }
+            String[] names = type.getAnnotation(JsonPropertyOrder.class).value();
+            Method[] ordered = new Method[names.length];
+            for (int i = 0; i < names.length; i++) {
+                ordered[i] = getters.get(names[i]);
+            }
+            JsonInclude include = type.getAnnotation(JsonInclude.class);
+            return new Layout(include != null && include.value() == JsonInclude.Include.NON_NULL, names, ordered);
+        }
     }
 
     /** @return whether {@link #write} writes {@code type} and every type it holds exactly like the mapper */
     static boolean supports(Class<?> type) {
-        return supportsRecord(type, new ArrayList<>());
+        return SUPPORTED.get(type);
     }
 
     /** @return {@code report} (a record type {@link #supports}) as pretty-printed JSON */
@@ -156,26 +195,14 @@ final class RecordJson {
     }
 
     private static void writeRecord(JsonGenerator g, Object record) throws IOException {
-        Class<?> type = record.getClass();
-        boolean nonNull = type.getAnnotation(JsonInclude.class) != null
-                && type.getAnnotation(JsonInclude.class).value() == JsonInclude.Include.NON_NULL;
-        Map<String, Method> getters = new LinkedHashMap<>();
-        for (RecordComponent c : type.getRecordComponents()) {
-            getters.put(c.getAccessor().getAnnotation(JsonProperty.class).value(), c.getAccessor());
-        }
-        for (Method m : type.getMethods()) {
-            JsonProperty p = m.getAnnotation(JsonProperty.class);
-            if (p != null && m.getParameterCount() == 0 && !Modifier.isStatic(m.getModifiers())) {
-                getters.putIfAbsent(p.value(), m);
-            }
-        }
+        Layout layout = LAYOUTS.get(record.getClass());
         g.writeStartObject(record);
-        for (String name : type.getAnnotation(JsonPropertyOrder.class).value()) {
-            Object v = get(getters.get(name), record);
-            if (v == null && nonNull) {
+        for (int i = 0; i < layout.names().length; i++) {
+            Object v = get(layout.getters()[i], record);
+            if (v == null && layout.leaveOutNulls()) {
                 continue;
             }
-            g.writeFieldName(name);
+            g.writeFieldName(layout.names()[i]);
             writeValue(g, v);
         }
         g.writeEndObject();
