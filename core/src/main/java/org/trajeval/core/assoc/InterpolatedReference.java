@@ -188,9 +188,13 @@ public final class InterpolatedReference implements PositionColumns {
         return yaw != null;
     }
 
-    /** Writes the rotation matrix of pose k (row-major) into {@code out[o..o+9)} (allocates scratch for SE(3)). */
+    /** Writes the rotation matrix of pose k (row-major) into {@code out[o..o+9)} (allocates scratch for SE(3), no cache). */
     public void rotation(int k, double[] out, int o) {
-        rotation(k, out, o, yaw != null ? null : new Cursor());
+        if (yaw != null) {
+            Rotations.aboutZ(yaw[k], out, o);
+        } else {
+            slerped(k, new double[4], new double[4], new double[4], out, o);
+        }
     }
 
     /**
@@ -213,16 +217,18 @@ public final class InterpolatedReference implements PositionColumns {
             System.arraycopy(cached, 9 * slot, out, o, 9);
             return;
         }
+        slerped(k, cursor.q0, cursor.q1, cursor.q, cached, 9 * slot);
+        cursor.pose[slot] = k;
+        System.arraycopy(cached, 9 * slot, out, o, 9);
+    }
+
+    /** The matrix of the slerp of pose k's segment quaternions into {@code out[o..o+9)}; q0, q1, q: scratch of 4. */
+    private void slerped(int k, double[] q0, double[] q1, double[] q, double[] out, int o) {
         int s = seg[k];
-        double[] q0 = cursor.q0;
-        double[] q1 = cursor.q1;
-        double[] q = cursor.q;
         spatialRef.quaternion(s - 1, q0);
         spatialRef.quaternion(s, q1);
         Rotations.slerp(q0, q1, frac[k], q, 0);
-        Rotations.fromQuaternion(q[0], q[1], q[2], q[3], cached, 9 * slot);
-        cursor.pose[slot] = k;
-        System.arraycopy(cached, 9 * slot, out, o, 9);
+        Rotations.fromQuaternion(q[0], q[1], q[2], q[3], out, o);
     }
 
     /** @return the poses as a materialised sequence (rotation matrices, z = 0 for planar data) */

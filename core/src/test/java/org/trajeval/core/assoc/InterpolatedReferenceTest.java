@@ -31,6 +31,7 @@ class InterpolatedReferenceTest {
         }
         InterpolatedReference.Cursor cursor = new InterpolatedReference.Cursor();
         double[] r = new double[9];
+        double[] uncached = new double[9];
         double[] expected = new double[12];
         // sequential, then backwards, then pose k and k + SLOTS alternately (the same cache slot)
         for (int pass = 0; pass < 3; pass++) {
@@ -39,8 +40,10 @@ class InterpolatedReferenceTest {
                         : (i % 2 == 0 ? i / 2 : Math.min(stamps.length - 1, i / 2 + InterpolatedReference.Cursor.SLOTS));
                 direct(ref, stamps[k], expected);
                 interp.rotation(k, r, 0, cursor);
+                interp.rotation(k, uncached, 0);
                 for (int c = 0; c < 9; c++) {
                     assertBits(expected[3 + c], r[c], "rotation " + c + " of pose " + k + ", pass " + pass);
+                    assertBits(expected[3 + c], uncached[c], "rotation " + c + " of pose " + k + " without a cursor");
                 }
                 assertBits(expected[0], interp.x(k), "x of pose " + k);
                 assertBits(expected[1], interp.y(k), "y of pose " + k);
