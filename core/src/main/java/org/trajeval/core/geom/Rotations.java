@@ -171,7 +171,7 @@ public final class Rotations {
             }
         }
         double axNorm = Math.sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
-        double angle = 2 * Math.atan2(axNorm, q[3]);
+        double angle = 2 * StrictAtan2.atan2(axNorm, q[3]); // Math.atan2's bits, without its JNI call
         double scale;
         if (angle <= 1e-3) {
             double a2 = angle * angle;
