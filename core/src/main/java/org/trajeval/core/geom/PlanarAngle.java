@@ -55,14 +55,7 @@ public final class PlanarAngle {
         }
         double axNorm = Math.sqrt(z * z);
         double angle = 2 * StrictAtan2.atan2(axNorm, w); // Math.atan2's bits, without its JNI call
-        double scale;
-        if (angle <= 1e-3) {
-            double a2 = angle * angle;
-            scale = 2 + a2 / 12 + 7 * a2 * a2 / 2880;
-        } else {
-            scale = angle / Math.sin(angle / 2.0);
-        }
-        double vz = scale * z;
+        double vz = Rotations.rotationVectorScale(angle) * z;
         return Math.sqrt(vz * vz);
     }
 

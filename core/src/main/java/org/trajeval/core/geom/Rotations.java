@@ -172,17 +172,25 @@ public final class Rotations {
         }
         double axNorm = Math.sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
         double angle = 2 * StrictAtan2.atan2(axNorm, q[3]); // Math.atan2's bits, without its JNI call
-        double scale;
-        if (angle <= 1e-3) {
-            double a2 = angle * angle;
-            scale = 2 + a2 / 12 + 7 * a2 * a2 / 2880;
-        } else {
-            scale = angle / Math.sin(angle / 2.0);
-        }
+        double scale = rotationVectorScale(angle);
         double vx = scale * q[0];
         double vy = scale * q[1];
         double vz = scale * q[2];
         return Math.sqrt(vx * vx + vy * vy + vz * vz);
+    }
+
+    /**
+     * The factor s with rotation vector = s (x, y, z) for a unit quaternion (x, y, z, w) of angle
+     * theta (rad): theta / sin(theta / 2), or its series 2 + theta^2 / 12 + 7 theta^4 / 2880 for
+     * theta &lt;= 1e-3 (SciPy's {@code as_rotvec}); shared by {@link #angle} and {@link PlanarAngle}
+     * so both compute it with the same operations.
+     */
+    static double rotationVectorScale(double angle) {
+        if (angle <= 1e-3) {
+            double a2 = angle * angle;
+            return 2 + a2 / 12 + 7 * a2 * a2 / 2880;
+        }
+        return angle / Math.sin(angle / 2.0);
     }
 
     /** SciPy's test: R R^T close to I with atol 1e-12 and rtol 1e-5 (numpy isclose). */
