@@ -113,4 +113,13 @@ class LauncherScriptTest {
         assertEquals(4, tier(Map.of(), "eval", "--batch", pairs.toString(), "--reports", tmp.resolve("out").toString()));
         assertEquals(4, tier(Map.of(), "--version"));
     }
+
+    @Test
+    void aLimitThatIsNotAWholeNumberIsRefusedInOneLine() throws Exception {
+        Result r = launch(Map.of("TRAJEVAL_C1_MAX_BYTES", "48M"), "eval", ref.toString(), est.toString(), "--json");
+        assertEquals(2, r.code(), r.err());
+        assertEquals("trajeval: environment variable TRAJEVAL_C1_MAX_BYTES must be a whole number of bytes"
+                + " (0: never C1 only), found \"48M\"\n", r.err());
+        assertEquals("", r.out());
+    }
 }
