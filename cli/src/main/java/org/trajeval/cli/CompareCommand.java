@@ -71,6 +71,7 @@ public final class CompareCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         PrintWriter out = spec.commandLine().getOut();
+        SuiteAnalysis.Settings settings = stats.analysis(); // the options before the files
         SuiteReport a = read(reportA);
         SuiteReport b = reportB == null ? a : read(reportB);
         String nameA = pick(a, methodA, reportB == null ? 0 : -1, "-a", reportA);
@@ -109,7 +110,6 @@ public final class CompareCommand implements Callable<Integer> {
         if (sameScore) {
             keys.add(SuiteAnalysis.SCORE);
         }
-        SuiteAnalysis.Settings settings = stats.analysis();
         for (String k : settings.targets().keySet()) {
             if (!keys.contains(k)) {
                 throw UsageProblem.of("--detect", "--detect: the reports have no compared metric '" + k

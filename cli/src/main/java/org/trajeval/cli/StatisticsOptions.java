@@ -20,27 +20,6 @@ public final class StatisticsOptions {
             description = "Bootstrap resamples, 100 to 1000000 (default: ${DEFAULT-VALUE}).")
     int resamples;
 
-    /** @throws org.trajeval.core.InputException on a level outside (0, 1) or fewer than 100 resamples */
-    void check() {
-        if (!(confidence > 0.0 && confidence < 1.0)) {
-            throw UsageProblem.of("--confidence", "--confidence must be a level between 0 and 1 (exclusive)",
-                    String.valueOf(confidence));
-        }
-        if (resamples < 100) {
-            throw UsageProblem.of("--resamples", "--resamples must be at least 100", String.valueOf(resamples));
-        }
-        if (!(power > 0.5 && power < 1.0)) {
-            throw UsageProblem.of("--power", "--power must be a probability between 0.5 and 1 (exclusive)",
-                    String.valueOf(power));
-        }
-        for (Map.Entry<String, Double> e : detect.entrySet()) {
-            if (e.getValue() == null || e.getValue() == 0.0 || !Double.isFinite(e.getValue())) {
-                throw UsageProblem.of("--detect", "--detect " + e.getKey() + " must be a finite non-zero difference",
-                        String.valueOf(e.getValue()));
-            }
-        }
-    }
-
     @Option(names = "--power", paramLabel = "P", defaultValue = "0.8",
             description = "Power of the planning figures: the smallest mean difference each comparison detects "
                 + "with this probability (default: ${DEFAULT-VALUE}).")
@@ -51,9 +30,20 @@ public final class StatisticsOptions {
                 + "ate_trans_rmse_m=0.01, or score=2) needs at --confidence and --power; repeatable.")
     Map<String, Double> detect = new LinkedHashMap<>();
 
-    /** @return the core's statistics settings */
+    /**
+     * @param allowLeakage run despite split leakage
+     * @return the suite's settings, checked by the core's one check of these options
+     * @throws org.trajeval.core.InputException (exit 2) on a level outside (0, 1), resamples outside 100 to
+     *     10^6, a power outside (0.5, 1) or a zero or non-finite {@code --detect} difference
+     */
+    org.trajeval.core.protocol.SuiteRunner.Settings suite(boolean allowLeakage) {
+        return new org.trajeval.core.protocol.SuiteRunner.Settings(seed, allowLeakage, confidence, resamples, power,
+                detect).checked();
+    }
+
+    /** @return the core's statistics settings, checked as {@link #suite} checks them */
     org.trajeval.core.protocol.SuiteAnalysis.Settings analysis() {
-        check();
+        suite(false);
         return new org.trajeval.core.protocol.SuiteAnalysis.Settings(seed, confidence, resamples, power, detect);
     }
 }

@@ -67,9 +67,8 @@ public final class SuiteCommand implements Callable<Integer> {
         }
         SuiteReport r;
         try {
-            stats.check();
-            r = SuiteOutput.runAndWrite(manifest, out, new SuiteRunner.Settings(stats.seed, allowLeakage,
-                    stats.confidence, stats.resamples, stats.power, stats.detect), threads == null ? Runtime.getRuntime().availableProcessors() : threads, err);
+            r = SuiteOutput.runAndWrite(manifest, out, stats.suite(allowLeakage),
+                    threads == null ? Runtime.getRuntime().availableProcessors() : threads, err);
         } catch (SplitLeakageException e) {
             err.println("trajeval: " + e.getMessage());
             err.flush();
