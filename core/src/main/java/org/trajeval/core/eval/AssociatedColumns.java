@@ -154,6 +154,8 @@ final class AssociatedColumns implements PosePairs {
      */
     static final class Scratch {
         final double[] ri = new double[9];
+        /** The two angles of {@link org.trajeval.core.geom.Rotations#angles}. */
+        final double[] angles = new double[2];
         /** Translation error of the last pose or pair computed (m). */
         double transError;
         /** Rotation error of the last pose or pair computed (rad). */

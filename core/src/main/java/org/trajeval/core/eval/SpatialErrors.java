@@ -186,11 +186,6 @@ final class SpatialErrors {
         final double rx = v[o + 21];
         final double ry = v[o + 22];
         final double rz = v[o + 23];
-        if (ateRotation != null) {
-            // the ATE rotation error of pose i: the angle of R'_i^T R_ref,i
-            ateRotation[i] = angleOfTransposeTimes(b00, b01, b02, b10, b11, b12, b20, b21, b22, f00, f01, f02, f10,
-                    f11, f12, f20, f21, f22);
-        }
         // Q = inv(Ref_i) Ref_j
         double q00 = dot(f00, f10, f20, g00, g10, g20);
         double q01 = dot(f00, f10, f20, g01, g11, g21);
@@ -222,8 +217,22 @@ final class SpatialErrors {
         double ey = dot(q01, q11, q21, sx, sy, sz) + -dot(q01, q11, q21, qx, qy, qz);
         double ez = dot(q02, q12, q22, sx, sy, sz) + -dot(q02, q12, q22, qx, qy, qz);
         s.transError = Math.sqrt(ex * ex + ey * ey + ez * ez);
-        s.rotError = angleOfTransposeTimes(q00, q01, q02, q10, q11, q12, q20, q21, q22, p00, p01, p02, p10, p11, p12,
-                p20, p21, p22);
+        if (ateRotation == null) {
+            s.rotError = angleOfTransposeTimes(q00, q01, q02, q10, q11, q12, q20, q21, q22, p00, p01, p02, p10, p11,
+                    p12, p20, p21, p22);
+            return;
+        }
+        // with the ATE rotation error of pose i, the angle of R'_i^T R_ref,i: two angles side by side
+        double[] two = s.angles;
+        Rotations.angles(dot(q00, q10, q20, p00, p10, p20), dot(q00, q10, q20, p01, p11, p21),
+                dot(q00, q10, q20, p02, p12, p22), dot(q01, q11, q21, p00, p10, p20), dot(q01, q11, q21, p01, p11, p21),
+                dot(q01, q11, q21, p02, p12, p22), dot(q02, q12, q22, p00, p10, p20), dot(q02, q12, q22, p01, p11, p21),
+                dot(q02, q12, q22, p02, p12, p22), dot(b00, b10, b20, f00, f10, f20), dot(b00, b10, b20, f01, f11, f21),
+                dot(b00, b10, b20, f02, f12, f22), dot(b01, b11, b21, f00, f10, f20), dot(b01, b11, b21, f01, f11, f21),
+                dot(b01, b11, b21, f02, f12, f22), dot(b02, b12, b22, f00, f10, f20), dot(b02, b12, b22, f01, f11, f21),
+                dot(b02, b12, b22, f02, f12, f22), two, 0);
+        s.rotError = two[0];
+        ateRotation[i] = two[1];
     }
 
     /**

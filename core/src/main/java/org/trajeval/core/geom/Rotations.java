@@ -181,22 +181,51 @@ public final class Rotations {
     public static double angle(double m00, double m01, double m02, double m10, double m11, double m12,
             double m20, double m21, double m22) {
         double[] q = new double[4];
+        unitQuaternionOf(m00, m01, m02, m10, m11, m12, m20, m21, m22, q);
+        double angle = 2 * StrictAtan2.atan2(norm(q[0], q[1], q[2]), q[3]); // Math.atan2's bits, without its JNI call
+        double scale = rotationVectorScale(angle);
+        return norm(scale * q[0], scale * q[1], scale * q[2]);
+    }
+
+    /**
+     * The angles (rad) of two matrices M and N given entry by entry, as two calls of
+     * {@link #angle(double, double, double, double, double, double, double, double, double)} would
+     * give them, into {@code out[o]} and {@code out[o + 1]}. The two computations are independent
+     * chains of long latency (two square roots, four divisions, atan2, sin); taking them step by
+     * step side by side lets the processor overlap them.
+     */
+    public static void angles(double m00, double m01, double m02, double m10, double m11, double m12, double m20,
+            double m21, double m22, double n00, double n01, double n02, double n10, double n11, double n12,
+            double n20, double n21, double n22, double[] out, int o) {
+        double[] a = new double[4];
+        double[] b = new double[4];
+        unitQuaternionOf(m00, m01, m02, m10, m11, m12, m20, m21, m22, a);
+        unitQuaternionOf(n00, n01, n02, n10, n11, n12, n20, n21, n22, b);
+        double angleA = 2 * StrictAtan2.atan2(norm(a[0], a[1], a[2]), a[3]);
+        double angleB = 2 * StrictAtan2.atan2(norm(b[0], b[1], b[2]), b[3]);
+        double scaleA = rotationVectorScale(angleA);
+        double scaleB = rotationVectorScale(angleB);
+        out[o] = norm(scaleA * a[0], scaleA * a[1], scaleA * a[2]);
+        out[o + 1] = norm(scaleB * b[0], scaleB * b[1], scaleB * b[2]);
+    }
+
+    /**
+     * The unit quaternion (x, y, z, w), w &gt;= 0, of the matrix (of its polar factor when it is not
+     * orthogonal) into {@code q[0..4)}: the first steps of {@link #angle(double[], int)}.
+     */
+    private static void unitQuaternionOf(double m00, double m01, double m02, double m10, double m11, double m12,
+            double m20, double m21, double m22, double[] q) {
         if (isOrthogonal(m00, m01, m02, m10, m11, m12, m20, m21, m22)) {
             unitQuaternion(m00, m01, m02, m10, m11, m12, m20, m21, m22, q);
         } else {
             double[] p = polarFactor(new double[] {m00, m01, m02, m10, m11, m12, m20, m21, m22}, 0);
             unitQuaternion(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], q);
         }
-        double x = q[0];
-        double y = q[1];
-        double z = q[2];
-        double axNorm = Math.sqrt(x * x + y * y + z * z);
-        double angle = 2 * StrictAtan2.atan2(axNorm, q[3]); // Math.atan2's bits, without its JNI call
-        double scale = rotationVectorScale(angle);
-        double vx = scale * x;
-        double vy = scale * y;
-        double vz = scale * z;
-        return Math.sqrt(vx * vx + vy * vy + vz * vz);
+    }
+
+    /** @return sqrt(x^2 + y^2 + z^2), summed left to right */
+    private static double norm(double x, double y, double z) {
+        return Math.sqrt(x * x + y * y + z * z);
     }
 
     /**

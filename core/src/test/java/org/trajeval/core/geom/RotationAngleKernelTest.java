@@ -8,7 +8,8 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The straight-line angle kernel ({@link Rotations#angle(double, double, double, double, double,
- * double, double, double, double)}, which {@link Rotations#angle(double[], int)} now calls) and
+ * double, double, double, double)}, which {@link Rotations#angle(double[], int)} now calls), its
+ * two-at-a-time form {@link Rotations#angles} and
  * {@link Rotations#toQuaternion} must give the bits of the array code they replaced
  * ({@link RotationsAsTheyWere}, verbatim from main at 4e1def5, with the JDK's atan2): seeded random
  * rotations and products of rotations, every branch of Shepperd's method (trace, m00, m11, m22),
@@ -126,6 +127,16 @@ class RotationAngleKernelTest {
         if (want != arr || want != loc) {
             assertEquals(Double.longBitsToDouble(want) + " " + Double.longBitsToDouble(want),
                     Double.longBitsToDouble(arr) + " " + Double.longBitsToDouble(loc), "angle of " + str(m));
+        }
+        // two at a time: M and its transpose (another rotation, or another matrix off the group)
+        double[] t = {m[0], m[3], m[6], m[1], m[4], m[7], m[2], m[5], m[8]};
+        long wantT = Double.doubleToRawLongBits(RotationsAsTheyWere.angle(t, 0));
+        double[] two = new double[3];
+        Rotations.angles(m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8], t[0], t[1], t[2], t[3], t[4], t[5], t[6],
+                t[7], t[8], two, 1);
+        if (want != Double.doubleToRawLongBits(two[1]) || wantT != Double.doubleToRawLongBits(two[2])) {
+            assertEquals(Double.longBitsToDouble(want) + " " + Double.longBitsToDouble(wantT), two[1] + " " + two[2],
+                    "angles of " + str(m) + " and its transpose");
         }
         double[] qa = new double[4];
         double[] qb = new double[4];
