@@ -200,6 +200,19 @@ final class AssociatedColumns implements PosePairs {
         }
     }
 
+    /** The ATE of pairs [from, to) into {@code trans[k]} (m) and {@code rot[k]} (rad), as {@link #ate} gives them. */
+    void ateInto(int from, int to, double[] trans, double[] rot, Scratch s) {
+        if (planar == null) {
+            spatial.ateInto(from, to, trans, rot, s);
+            return;
+        }
+        for (int k = from; k < to; k++) {
+            ate(k, s);
+            trans[k] = s.transError;
+            rot[k] = s.rotError;
+        }
+    }
+
     /**
      * The RPE of pair (i, j): E = (Q_i^-1 Q_j)^-1 (P'_i^-1 P'_j), |trans(E)| (m) into
      * {@code s.transError}, its angle (rad) into {@code s.rotError}.

@@ -127,6 +127,57 @@ final class SpatialErrors {
     }
 
     /**
+     * The ATE of pairs [from, to) into {@code trans[k]} (m) and {@code rot[k]} (rad), as {@link #ate}
+     * gives them. Without rotation errors from the RPE, poses go two at a time through the window
+     * and {@link Rotations#angles}, so the two angles' long chains overlap.
+     */
+    void ateInto(int from, int to, double[] trans, double[] rot, AssociatedColumns.Scratch s) {
+        int k = from;
+        if (ateRotation == null) {
+            Window w = s.spatialWindow();
+            double[] v = w.v;
+            for (; k + 1 < to; k += 2) {
+                int o = w.slot(this, k, s);
+                int n = w.slot(this, k + 1, s);
+                trans[k] = distance(v, o);
+                trans[k + 1] = distance(v, n);
+                // R'^T R_ref of poses k and k + 1: rotations at v[o + 12] and v[o]
+                Rotations.angles(dot(v[o + 12], v[o + 15], v[o + 18], v[o], v[o + 3], v[o + 6]),
+                        dot(v[o + 12], v[o + 15], v[o + 18], v[o + 1], v[o + 4], v[o + 7]),
+                        dot(v[o + 12], v[o + 15], v[o + 18], v[o + 2], v[o + 5], v[o + 8]),
+                        dot(v[o + 13], v[o + 16], v[o + 19], v[o], v[o + 3], v[o + 6]),
+                        dot(v[o + 13], v[o + 16], v[o + 19], v[o + 1], v[o + 4], v[o + 7]),
+                        dot(v[o + 13], v[o + 16], v[o + 19], v[o + 2], v[o + 5], v[o + 8]),
+                        dot(v[o + 14], v[o + 17], v[o + 20], v[o], v[o + 3], v[o + 6]),
+                        dot(v[o + 14], v[o + 17], v[o + 20], v[o + 1], v[o + 4], v[o + 7]),
+                        dot(v[o + 14], v[o + 17], v[o + 20], v[o + 2], v[o + 5], v[o + 8]),
+                        dot(v[n + 12], v[n + 15], v[n + 18], v[n], v[n + 3], v[n + 6]),
+                        dot(v[n + 12], v[n + 15], v[n + 18], v[n + 1], v[n + 4], v[n + 7]),
+                        dot(v[n + 12], v[n + 15], v[n + 18], v[n + 2], v[n + 5], v[n + 8]),
+                        dot(v[n + 13], v[n + 16], v[n + 19], v[n], v[n + 3], v[n + 6]),
+                        dot(v[n + 13], v[n + 16], v[n + 19], v[n + 1], v[n + 4], v[n + 7]),
+                        dot(v[n + 13], v[n + 16], v[n + 19], v[n + 2], v[n + 5], v[n + 8]),
+                        dot(v[n + 14], v[n + 17], v[n + 20], v[n], v[n + 3], v[n + 6]),
+                        dot(v[n + 14], v[n + 17], v[n + 20], v[n + 1], v[n + 4], v[n + 7]),
+                        dot(v[n + 14], v[n + 17], v[n + 20], v[n + 2], v[n + 5], v[n + 8]), rot, k);
+            }
+        }
+        for (; k < to; k++) {
+            ate(k, s);
+            trans[k] = s.transError;
+            rot[k] = s.rotError;
+        }
+    }
+
+    /** @return |p' - p_ref| (m) of the pose whose window values start at v[o] */
+    private static double distance(double[] v, int o) {
+        double dx = v[o + 21] - v[o + 9];
+        double dy = v[o + 22] - v[o + 10];
+        double dz = v[o + 23] - v[o + 11];
+        return Math.sqrt(dx * dx + dy * dy + dz * dz);
+    }
+
+    /**
      * The RPE of pair (i, j) into {@code s.transError} (m) and {@code s.rotError} (rad); for an
      * SE(3) interpolated reference also the ATE rotation error of pose i, from the rotations in hand.
      */

@@ -106,11 +106,26 @@ class SpatialKernelsTest {
         return AssociatedColumns.matched(ref, est, np.reference(), np.estimate(), np.count(), 0.0);
     }
 
+    /** Pose by pose, then in ranges as the evaluator's chunks ask for them (two at a time, odd ends). */
     private static void sameAte(AssociatedColumns fast, MatrixKernelsAsTheyWere old, String what) {
         AssociatedColumns.Scratch s = new AssociatedColumns.Scratch();
-        for (int k = 0; k < fast.size(); k++) {
+        int m = fast.size();
+        for (int k = 0; k < m; k++) {
             fast.ate(k, s);
             same(old.ate(k), s, what + " pose " + k);
+        }
+        double[] trans = new double[m];
+        double[] rot = new double[m];
+        fast.ateInto(0, 1, trans, rot, new AssociatedColumns.Scratch());
+        fast.ateInto(1, 700, trans, rot, new AssociatedColumns.Scratch());
+        fast.ateInto(700, m, trans, rot, s);
+        for (int k = 0; k < m; k++) {
+            double[] want = old.ate(k);
+            if (Double.doubleToRawLongBits(want[0]) != Double.doubleToRawLongBits(trans[k])
+                    || Double.doubleToRawLongBits(want[1]) != Double.doubleToRawLongBits(rot[k])) {
+                assertEquals(want[0] + " m " + want[1] + " rad", trans[k] + " m " + rot[k] + " rad",
+                        what + " pose " + k + " in a range");
+            }
         }
     }
 
