@@ -86,12 +86,7 @@ final class ColumnarEvaluator {
         ErrorStatistics rpeTrans = ErrorStatistics.ofInPlace(trans, count);
         ErrorStatistics rpeRot = ErrorStatistics.ofInPlace(rot, count);
         par.forEachChunk(m, (c, from, to) -> {
-            AssociatedColumns.Scratch s = new AssociatedColumns.Scratch();
-            for (int k = from; k < to; k++) {
-                pairs.ate(k, s);
-                trans[k] = s.transError;
-                rot[k] = s.rotError;
-            }
+            pairs.ateInto(from, to, trans, rot, new AssociatedColumns.Scratch());
         });
         ErrorStatistics ateTrans = ErrorStatistics.ofInPlace(trans, m);
         ErrorStatistics ateRot = ErrorStatistics.ofInPlace(rot, m);

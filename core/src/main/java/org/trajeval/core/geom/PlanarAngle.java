@@ -2,7 +2,7 @@ package org.trajeval.core.geom;
 
 /**
  * Rotation angle (rad, in [0, pi]) of a rotation about +z given by its upper-left 2x2 block
- * [[m00, m01], [m10, m11]]: bit for bit {@link Rotations#angle(double[], int, double[])} of the
+ * [[m00, m01], [m10, m11]]: bit for bit {@link Rotations#angle(double[], int)} of the
  * 3x3 matrix [[m00, m01, 0], [m10, m11, 0], [0, 0, 1]], with the operations on the exact zeros and
  * the one of that matrix left out.
  *
@@ -60,6 +60,6 @@ public final class PlanarAngle {
     }
 
     private static double general(double m00, double m01, double m10, double m11) {
-        return Rotations.angle(new double[] {m00, m01, 0.0, m10, m11, 0.0, 0.0, 0.0, 1.0}, 0);
+        return Rotations.angle(m00, m01, 0.0, m10, m11, 0.0, 0.0, 0.0, 1.0);
     }
 }

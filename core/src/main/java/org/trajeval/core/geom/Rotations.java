@@ -80,20 +80,23 @@ public final class Rotations {
      */
     public static void toQuaternion(double[] r, int o, double[] q) {
         double[] xyzw = new double[4];
-        shepperd(r, o, xyzw);
-        double w = xyzw[3];
-        double sign = w < 0 ? -1.0 : 1.0;
-        q[0] = sign * w;
-        q[1] = sign * xyzw[0];
-        q[2] = sign * xyzw[1];
-        q[3] = sign * xyzw[2];
+        unitQuaternion(r[o], r[o + 1], r[o + 2], r[o + 3], r[o + 4], r[o + 5], r[o + 6], r[o + 7], r[o + 8], xyzw);
+        q[0] = xyzw[3];
+        q[1] = xyzw[0];
+        q[2] = xyzw[1];
+        q[3] = xyzw[2];
     }
 
-    /** Shepperd's method as SciPy implements it; writes a normalised (x, y, z, w). */
-    private static void shepperd(double[] m, int o, double[] q) {
-        double m00 = m[o];
-        double m11 = m[o + 4];
-        double m22 = m[o + 8];
+    /**
+     * Shepperd's method as SciPy implements it, on the matrix [[m00, m01, m02], [m10, m11, m12],
+     * [m20, m21, m22]]: the largest of trace, m00, m11, m22 picks the branch, the four terms of that
+     * branch are divided by their norm, and all four are negated when w &lt; 0. Writes (x, y, z, w)
+     * with w &gt;= 0 into {@code q[0..4)}. Straight-line code on locals: callers that allocate q
+     * locally (as {@link #angle(double, double, double, double, double, double, double, double, double)}
+     * does) have it replaced by registers by the JIT's escape analysis.
+     */
+    private static void unitQuaternion(double m00, double m01, double m02, double m10, double m11, double m12,
+            double m20, double m21, double m22, double[] q) {
         double trace = m00 + m11 + m22;
         int choice = 0;
         double best = m00;
@@ -108,36 +111,51 @@ public final class Rotations {
         if (trace > best) {
             choice = 3;
         }
+        double x;
+        double y;
+        double z;
+        double w;
         switch (choice) {
             case 0 -> {
-                q[0] = 1 - trace + 2 * m00;
-                q[1] = m[o + 3] + m[o + 1];
-                q[2] = m[o + 6] + m[o + 2];
-                q[3] = m[o + 7] - m[o + 5];
+                x = 1 - trace + 2 * m00;
+                y = m10 + m01;
+                z = m20 + m02;
+                w = m21 - m12;
             }
             case 1 -> {
-                q[0] = m[o + 3] + m[o + 1];
-                q[1] = 1 - trace + 2 * m11;
-                q[2] = m[o + 7] + m[o + 5];
-                q[3] = m[o + 2] - m[o + 6];
+                x = m10 + m01;
+                y = 1 - trace + 2 * m11;
+                z = m21 + m12;
+                w = m02 - m20;
             }
             case 2 -> {
-                q[0] = m[o + 6] + m[o + 2];
-                q[1] = m[o + 7] + m[o + 5];
-                q[2] = 1 - trace + 2 * m22;
-                q[3] = m[o + 3] - m[o + 1];
+                x = m20 + m02;
+                y = m21 + m12;
+                z = 1 - trace + 2 * m22;
+                w = m10 - m01;
             }
             default -> {
-                q[0] = m[o + 7] - m[o + 5];
-                q[1] = m[o + 2] - m[o + 6];
-                q[2] = m[o + 3] - m[o + 1];
-                q[3] = 1 + trace;
+                x = m21 - m12;
+                y = m02 - m20;
+                z = m10 - m01;
+                w = 1 + trace;
             }
         }
-        double norm = Math.sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-        for (int k = 0; k < 4; k++) {
-            q[k] /= norm;
+        double norm = Math.sqrt(x * x + y * y + z * z + w * w);
+        x /= norm;
+        y /= norm;
+        z /= norm;
+        w /= norm;
+        if (w < 0) {
+            x = -x;
+            y = -y;
+            z = -z;
+            w = -w;
         }
+        q[0] = x;
+        q[1] = y;
+        q[2] = z;
+        q[3] = w;
     }
 
     /**
@@ -148,35 +166,66 @@ public final class Rotations {
      * by its nearest rotation (polar factor).
      */
     public static double angle(double[] r, int o) {
-        return angle(r, o, new double[4]);
+        return angle(r[o], r[o + 1], r[o + 2], r[o + 3], r[o + 4], r[o + 5], r[o + 6], r[o + 7], r[o + 8]);
     }
 
     /**
-     * {@link #angle(double[], int)} with caller-owned scratch space for the quaternion (hot loops
-     * pass one array per thread instead of allocating one per call).
+     * {@link #angle(double[], int)} of the matrix [[m00, m01, m02], [m10, m11, m12], [m20, m21, m22]]
+     * given entry by entry, so that kernels holding a product in locals need not store it. The same
+     * operations in the same order as the matrix form (orthogonality test, polar factor when it
+     * fails, Shepperd's quaternion with w &gt;= 0, rotation vector), hence the same bits.
      *
-     * @param q scratch, at least 4 long; overwritten
+     * <p>Example: +90 deg about +z, rows (0, -1, 0), (1, 0, 0), (0, 0, 1): trace 1 is the largest, so
+     * q = (0, 0, 2, 2) / sqrt(8) and the angle is 2 atan2(1/sqrt(2), 1/sqrt(2)) = pi/2.
      */
-    public static double angle(double[] r, int o, double[] q) {
-        double[] m = r;
-        int mo = o;
-        if (!isOrthogonal(r, o)) {
-            m = polarFactor(r, o);
-            mo = 0;
-        }
-        shepperd(m, mo, q);
-        if (q[3] < 0) {
-            for (int k = 0; k < 4; k++) {
-                q[k] = -q[k];
-            }
-        }
-        double axNorm = Math.sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
-        double angle = 2 * StrictAtan2.atan2(axNorm, q[3]); // Math.atan2's bits, without its JNI call
+    public static double angle(double m00, double m01, double m02, double m10, double m11, double m12,
+            double m20, double m21, double m22) {
+        double[] q = new double[4];
+        unitQuaternionOf(m00, m01, m02, m10, m11, m12, m20, m21, m22, q);
+        double angle = 2 * StrictAtan2.atan2(norm(q[0], q[1], q[2]), q[3]); // Math.atan2's bits, without its JNI call
         double scale = rotationVectorScale(angle);
-        double vx = scale * q[0];
-        double vy = scale * q[1];
-        double vz = scale * q[2];
-        return Math.sqrt(vx * vx + vy * vy + vz * vz);
+        return norm(scale * q[0], scale * q[1], scale * q[2]);
+    }
+
+    /**
+     * The angles (rad) of two matrices M and N given entry by entry, as two calls of
+     * {@link #angle(double, double, double, double, double, double, double, double, double)} would
+     * give them, into {@code out[o]} and {@code out[o + 1]}. The two computations are independent
+     * chains of long latency (two square roots, four divisions, atan2, sin); taking them step by
+     * step side by side lets the processor overlap them.
+     */
+    public static void angles(double m00, double m01, double m02, double m10, double m11, double m12, double m20,
+            double m21, double m22, double n00, double n01, double n02, double n10, double n11, double n12,
+            double n20, double n21, double n22, double[] out, int o) {
+        double[] a = new double[4];
+        double[] b = new double[4];
+        unitQuaternionOf(m00, m01, m02, m10, m11, m12, m20, m21, m22, a);
+        unitQuaternionOf(n00, n01, n02, n10, n11, n12, n20, n21, n22, b);
+        double angleA = 2 * StrictAtan2.atan2(norm(a[0], a[1], a[2]), a[3]);
+        double angleB = 2 * StrictAtan2.atan2(norm(b[0], b[1], b[2]), b[3]);
+        double scaleA = rotationVectorScale(angleA);
+        double scaleB = rotationVectorScale(angleB);
+        out[o] = norm(scaleA * a[0], scaleA * a[1], scaleA * a[2]);
+        out[o + 1] = norm(scaleB * b[0], scaleB * b[1], scaleB * b[2]);
+    }
+
+    /**
+     * The unit quaternion (x, y, z, w), w &gt;= 0, of the matrix (of its polar factor when it is not
+     * orthogonal) into {@code q[0..4)}: the first steps of {@link #angle(double[], int)}.
+     */
+    private static void unitQuaternionOf(double m00, double m01, double m02, double m10, double m11, double m12,
+            double m20, double m21, double m22, double[] q) {
+        if (isOrthogonal(m00, m01, m02, m10, m11, m12, m20, m21, m22)) {
+            unitQuaternion(m00, m01, m02, m10, m11, m12, m20, m21, m22, q);
+        } else {
+            double[] p = polarFactor(new double[] {m00, m01, m02, m10, m11, m12, m20, m21, m22}, 0);
+            unitQuaternion(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], q);
+        }
+    }
+
+    /** @return sqrt(x^2 + y^2 + z^2), summed left to right */
+    private static double norm(double x, double y, double z) {
+        return Math.sqrt(x * x + y * y + z * z);
     }
 
     /**
@@ -193,19 +242,21 @@ public final class Rotations {
         return angle / Math.sin(angle / 2.0);
     }
 
-    /** SciPy's test: R R^T close to I with atol 1e-12 and rtol 1e-5 (numpy isclose). */
-    private static boolean isOrthogonal(double[] r, int o) {
-        for (int i = 0; i < 3; i++) {
-            for (int j = 0; j < 3; j++) {
-                double g = r[o + 3 * i] * r[o + 3 * j] + r[o + 3 * i + 1] * r[o + 3 * j + 1]
-                        + r[o + 3 * i + 2] * r[o + 3 * j + 2];
-                double e = (i == j) ? 1.0 : 0.0;
-                if (!(Math.abs(g - e) <= 1e-12 + 1e-5 * Math.abs(e))) {
-                    return false;
-                }
-            }
-        }
-        return true;
+    /**
+     * SciPy's test: R R^T close to I with atol 1e-12 and rtol 1e-5 (numpy isclose). R R^T is
+     * symmetric bit for bit (entry (i, j) and (j, i) are the same products summed in the same
+     * order), so its upper triangle decides.
+     */
+    private static boolean isOrthogonal(double m00, double m01, double m02, double m10, double m11, double m12,
+            double m20, double m21, double m22) {
+        double diag = 1e-12 + 1e-5 * Math.abs(1.0);
+        double off = 1e-12 + 1e-5 * Math.abs(0.0);
+        return Math.abs(m00 * m00 + m01 * m01 + m02 * m02 - 1.0) <= diag
+                && Math.abs(m00 * m10 + m01 * m11 + m02 * m12 - 0.0) <= off
+                && Math.abs(m00 * m20 + m01 * m21 + m02 * m22 - 0.0) <= off
+                && Math.abs(m10 * m10 + m11 * m11 + m12 * m12 - 1.0) <= diag
+                && Math.abs(m10 * m20 + m11 * m21 + m12 * m22 - 0.0) <= off
+                && Math.abs(m20 * m20 + m21 * m21 + m22 * m22 - 1.0) <= diag;
     }
 
     /**
