@@ -13,10 +13,10 @@ package org.trajeval.core.geom;
  * |m00 m10 + m01 m11| &lt;= 1e-12; Shepperd's trace is (m00 + m11) + 1. For a rotation about +z
  * (m00 = m11 = cos) Shepperd takes the trace branch (q = (0, 0, m10 - m01, 1 + trace)) or the
  * m22 branch (q = (0, 0, (1 - trace) + 2, m10 - m01)); the rotation vector is then (0, 0, v_z)
- * and the angle sqrt(v_z^2), which is |v_z| ({@link #rootOfSquare}). The other branches (m00 or m11 the largest diagonal entry: only
- * reflections or blocks far from orthogonal) and blocks that fail the orthogonality test (which
- * {@link Rotations#angle} first replaces by their polar factor) go to {@link Rotations#angle}
- * itself.
+ * and the angle sqrt(v_z^2), which is |v_z| ({@link #rootOfSquare}). The other branches (m00 or
+ * m11 the largest diagonal entry: only reflections or blocks far from orthogonal) and blocks that
+ * fail the orthogonality test (which {@link Rotations#angle} first replaces by their polar factor)
+ * go to {@link Rotations#angle} itself.
  *
  * <p>Example: the block of +90 deg about +z, [[0, -1], [1, 0]]: trace 1, q = (0, 0, 2, 2) / sqrt(8),
  * angle 2 atan2(1/sqrt(2), 1/sqrt(2)) = pi/2.

@@ -12,11 +12,12 @@ import org.junit.jupiter.api.io.TempDir;
 import org.trajeval.core.traj.SpatialTrajectory;
 
 /**
- * KITTI poses keep their values whichever way their columns were buffered: read without a copy
- * trimmed to the pose count, they still give trajectories of exactly that many poses, and a
- * times file sorted with --sort carries every pose's position and rotation along with its time.
+ * Readers hand their columns over as filled, without a copy trimmed to the pose count (KITTI, the
+ * Euler-angle formats): the trajectories still hold exactly that many poses with the values read,
+ * and a KITTI times file sorted with --sort carries every pose's position and rotation along with
+ * its time.
  */
-class KittiColumnsTest {
+class HandedOverColumnsTest {
     @TempDir
     Path dir;
 
@@ -67,6 +68,26 @@ class KittiColumnsTest {
             t.rotation(last, r, 0);
             assertArrayEquals(rotation(11), r, 0.0);
         }
+    }
+
+    @Test
+    void manyNcltPosesGiveExactlyThatMany() throws IOException {
+        // 30 000 NCLT rows (utime us, x, y, z, roll, pitch, yaw): enough for the buffer to size itself
+        // from the file; pose i at utime 1e15 + 1e4 i, x = i, z = 0.25 (by hand: t = utime / 1e6)
+        int n = 30_000;
+        StringBuilder p = new StringBuilder();
+        for (int i = 0; i < n; i++) {
+            p.append(1_000_000_000_000_000L + 10_000L * i).append(',').append(i).append(",2,0.25,0,0,0.5\n");
+        }
+        Path file = write("groundtruth.csv", p.toString());
+        SpatialTrajectory t = (SpatialTrajectory) TrajectoryReader.read(file,
+                ReadOptions.defaults().withFormat(TrajectoryFormat.NCLT)).trajectory();
+        assertEquals(n, t.size());
+        assertEquals(n, t.poses().size());
+        assertEquals((1_000_000_000_000_000L + 10_000L * (n - 1)) / 1e6, t.t(n - 1), 0.0);
+        assertEquals(n - 1, t.x(n - 1), 0.0);
+        assertEquals(0.25, t.z(n - 1), 0.0);
+        assertEquals(Math.cos(0.25), t.qw(n - 1), 1e-15); // yaw 0.5 alone: (cos 0.25, 0, 0, sin 0.25)
     }
 
     private Path write(String name, String text) throws IOException {
