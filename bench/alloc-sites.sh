@@ -36,4 +36,4 @@ TRAJEVAL_OPTS="${TRAJEVAL_OPTS:-} -XX:StartFlightRecording:filename=$JFR,setting
     /usr/bin/time -f '%M %R %e %U %S' -o "$WORK/time" "$TRAJEVAL" "$@" > "$WORK/out" 2> "$WORK/err" || {
     echo "bench/alloc-sites.sh: trajeval failed:" >&2; tail -5 "$WORK/err" >&2; exit 1; }
 jfr print --json --events jdk.ObjectAllocationOutsideTLAB,jdk.ObjectAllocationInNewTLAB "$JFR" > "$WORK/events.json"
-exec python3 bench/python/alloc_sites.py "$WORK/events.json" "$WORK/time" "$MIN_MIB"
+python3 bench/python/alloc_sites.py "$WORK/events.json" "$WORK/time" "$MIN_MIB"
