@@ -13,10 +13,10 @@ package org.trajeval.core.geom;
  * |m00 m10 + m01 m11| &lt;= 1e-12; Shepperd's trace is (m00 + m11) + 1. For a rotation about +z
  * (m00 = m11 = cos) Shepperd takes the trace branch (q = (0, 0, m10 - m01, 1 + trace)) or the
  * m22 branch (q = (0, 0, (1 - trace) + 2, m10 - m01)); the rotation vector is then (0, 0, v_z)
- * and the angle sqrt(v_z^2). The other branches (m00 or m11 the largest diagonal entry: only
- * reflections or blocks far from orthogonal) and blocks that fail the orthogonality test (which
- * {@link Rotations#angle} first replaces by their polar factor) go to {@link Rotations#angle}
- * itself.
+ * and the angle sqrt(v_z^2), which is |v_z| ({@link #rootOfSquare}). The other branches (m00 or
+ * m11 the largest diagonal entry: only reflections or blocks far from orthogonal) and blocks that
+ * fail the orthogonality test (which {@link Rotations#angle} first replaces by their polar factor)
+ * go to {@link Rotations#angle} itself.
  *
  * <p>Example: the block of +90 deg about +z, [[0, -1], [1, 0]]: trace 1, q = (0, 0, 2, 2) / sqrt(8),
  * angle 2 atan2(1/sqrt(2), 1/sqrt(2)) = pi/2.
@@ -53,10 +53,28 @@ public final class PlanarAngle {
             z = -z;
             w = -w;
         }
-        double axNorm = Math.sqrt(z * z);
+        double axNorm = rootOfSquare(z);
         double angle = 2 * StrictAtan2.atan2(axNorm, w); // Math.atan2's bits, without its JNI call
         double vz = Rotations.rotationVectorScale(angle) * z;
-        return Math.sqrt(vz * vz);
+        return rootOfSquare(vz);
+    }
+
+    /**
+     * {@code Math.sqrt(x * x)} bit for bit, without the square root where it is not needed: |x| when
+     * 2^-511 &lt;= |x| &lt;= 2^511, else the square root of the rounded square.
+     *
+     * <p>Why |x| is exact there (binary64, round to nearest): write |x| = m 2^e with 1 &lt;= m &lt;= 2 - 2^-52.
+     * In that range x^2 is a normal number (at least 2^-1022, at most 2^1022), so the product is rounded
+     * with relative error at most u = 2^-53 / (1 + 2^-53): fl(x^2) = m^2 2^2e (1 + d), |d| &lt;= u. Its exact
+     * square root is m 2^e sqrt(1 + d), which differs from |x| by at most m 2^e (u / 2)(1 + u) &lt;
+     * 2^e 2^-53: less than half the spacing 2^(e-52) of the doubles around |x|, so the rounded root is
+     * |x| itself. Below 2^-511 the square is subnormal or zero and loses bits (x = 2^-537 + 2^-589:
+     * sqrt(x * x) = 2^-537), so there, as beyond 2^511 where the square overflows, the root is taken.
+     * Signed zeros and NaN take the root too: sqrt(+-0 * +-0) = +0.
+     */
+    static double rootOfSquare(double x) {
+        double a = Math.abs(x);
+        return a >= 0x1p-511 && a <= 0x1p511 ? a : Math.sqrt(x * x);
     }
 
     private static double general(double m00, double m01, double m10, double m11) {

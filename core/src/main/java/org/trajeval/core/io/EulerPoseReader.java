@@ -99,10 +99,12 @@ final class EulerPoseReader {
                 }
                 add(poses, row, line, rows, 0);
             }
-            double[][] c = poses.finish("it holds no pose line");
+            // handed over as filled (up to 4 % longer than the pose count), not trimmed by a copy
+            double[][] c = poses.finishUntrimmed("it holds no pose line");
             String sha = lines.finishSha256();
             return new LoadedTrajectory(source, f, reason,
-                    SpatialTrajectory.of(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]), sha, false);
+                    SpatialTrajectory.ofFirst(poses.size(), c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]), sha,
+                    false);
         }
     }
 

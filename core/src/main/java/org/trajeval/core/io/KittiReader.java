@@ -1,6 +1,7 @@
 package org.trajeval.core.io;
 
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.Locale;
 import org.trajeval.core.InputException;
 import org.trajeval.core.InputProblem;
@@ -28,6 +29,7 @@ final class KittiReader {
 
     static LoadedTrajectory read(ByteSource file, String source, ReadOptions options, String reason) {
         double[][] c;
+        int n;
         String sha;
         try (ByteLines lines = ByteLines.open(file, source, options.maxBytes())) {
             NumericRows rows = new NumericRows(lines, source, NumericRows.WHITESPACE, false);
@@ -61,15 +63,20 @@ final class KittiReader {
                 System.arraycopy(r, 0, row, 4, 9);
                 poses.add(row, rows.lineNumber());
             }
-            c = poses.finish("it holds only comment or blank lines");
+            // the columns as filled (up to 4 % longer than the pose count): each value is copied once
+            // more below, into the matrices or the times file's columns, so a trimmed copy would be a third
+            c = poses.finishUntrimmed("it holds only comment or blank lines");
+            n = poses.size();
             sha = lines.finishSha256();
         }
         boolean indexStamps = options.kittiTimes() == null;
         if (!indexStamps) {
-            c = withTimes(c, source, options);
+            c = withTimes(c, n, source, options);
             reason = reason + "; times from " + options.kittiTimes();
         }
-        int n = c[0].length;
+        for (int k = 0; k < 4; k++) {
+            c[k] = c[k].length == n ? c[k] : Arrays.copyOf(c[k], n);
+        }
         double[] matrices = new double[9 * n];
         for (int i = 0; i < n; i++) {
             for (int k = 0; k < 9; k++) {
@@ -80,18 +87,20 @@ final class KittiReader {
                 SpatialTrajectory.ofMatrices(c[0], c[1], c[2], c[3], matrices), sha, indexStamps);
     }
 
-    /** Replaces the index stamps by the times file's, one line per pose, with the order policy. */
-    private static double[][] withTimes(double[][] c, String poseSource, ReadOptions options) {
+    /**
+     * Replaces the index stamps of the first n poses of the columns c by the times file's, one line
+     * per pose, with the order policy; the columns returned hold exactly n poses.
+     */
+    private static double[][] withTimes(double[][] c, int n, String poseSource, ReadOptions options) {
         Path timesPath = options.kittiTimes();
         String source = timesPath.toString();
-        int n = c[0].length;
         TrajectoryReader.checkFile(timesPath, source, options.maxBytes());
         try (ByteLines lines = ByteLines.open(timesPath, source, options.maxBytes())) {
             NumericRows rows = new NumericRows(lines, source, NumericRows.WHITESPACE, false);
             rows.select(new int[] {0}, new String[] {"time"}, new String[] {"(s)"});
             rows.requireFields(1, "one time in s per line");
             PoseBuffer poses = new PoseBuffer(source, "time", COLUMNS, options.order(), options.duplicates(),
-                    options.maxPoses());
+                    options.maxPoses()).capacity(n);
             double[] in = new double[1];
             double[] row = new double[COLUMNS];
             int k = 0;

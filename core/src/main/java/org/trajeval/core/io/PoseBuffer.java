@@ -108,6 +108,27 @@ final class PoseBuffer {
     }
 
     /**
+     * Sizes the columns for a pose count known in advance (a KITTI times file has one line per pose
+     * already read): up to that many poses need no growth, and {@link #finish} hands exactly that
+     * many over without a trimming copy. Call before the first {@link #add}.
+     *
+     * @return this buffer
+     */
+    PoseBuffer capacity(int poses) {
+        if (n > 0) {
+            throw new IllegalStateException("capacity is set before the first pose");
+        }
+        int c = Math.max(1, poses);
+        for (int k = 0; k < columns.length; k++) {
+            columns[k] = new double[c];
+        }
+        if (lines != null) {
+            lines = new long[c];
+        }
+        return this;
+    }
+
+    /**
      * Lets the buffer size itself from the bytes read so far: at the first growth it extrapolates
      * the pose count from the bytes per pose, so a big file needs one allocation, not twenty.
      */

@@ -1,6 +1,7 @@
 package org.trajeval.core.geom;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Random;
 import org.junit.jupiter.api.Test;
@@ -77,6 +78,38 @@ class PlanarAngleTest {
         }
         sameAsMatrix(Double.NaN, 0, 0, 1, rnd);
         sameAsMatrix(2, 0, 0, 0.5, rnd);
+    }
+
+    @Test
+    void rootOfSquareIsTheSquareRootOfTheSquareBitForBitAtEveryExponent() {
+        // reference: Math.sqrt(x * x) itself, on seeded mantissas at every binary exponent (subnormals
+        // included) and at the edges of the range where |x| is returned (2^-511, 2^511)
+        Random rnd = new Random(18);
+        int whereAbsWouldBeWrong = 0;
+        for (int exp = -1074; exp <= 1023; exp++) {
+            for (int k = 0; k < 64; k++) {
+                double x = Math.scalb(1.0 + rnd.nextDouble(), exp);
+                x = rnd.nextBoolean() ? x : -x;
+                sameAsRootOfSquare(x);
+                if (Math.sqrt(x * x) != Math.abs(x)) {
+                    whereAbsWouldBeWrong++;
+                }
+            }
+        }
+        double[] edges = {0x1p-511, 0x1p511, 0x1p-537 + 0x1p-589, 0.0, -0.0, Double.MIN_VALUE, Double.MIN_NORMAL,
+            Double.MAX_VALUE, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NaN, 1.0, Math.nextDown(2.0)};
+        for (double e : edges) {
+            for (double x : new double[] {e, -e, Math.nextUp(e), Math.nextDown(e)}) {
+                sameAsRootOfSquare(x);
+            }
+        }
+        // the sweep reaches the squares that underflow or overflow, where |x| alone would differ
+        assertTrue(whereAbsWouldBeWrong > 1000, "values where |x| differs from sqrt(x * x): " + whereAbsWouldBeWrong);
+    }
+
+    private static void sameAsRootOfSquare(double x) {
+        assertEquals(Double.doubleToRawLongBits(Math.sqrt(x * x)), Double.doubleToRawLongBits(PlanarAngle.rootOfSquare(x)),
+                () -> "x = " + x + " (" + Double.toHexString(x) + ")");
     }
 
     /** Compares with the matrix angle for a random choice of signs of the four zeros. */

@@ -1,6 +1,9 @@
 package org.trajeval.core.io;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotSame;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -47,5 +50,24 @@ class PoseBufferSizingTest {
             assertEquals(61_999.123456, columns[0][n - 1]);
             assertEquals(3.12345, columns[3][n - 1]);
         }
+    }
+
+    @Test
+    void aBufferGivenItsPoseCountHandsOverItsOwnColumns() {
+        // capacity(3) and three poses: finish returns the buffer's columns themselves (the same
+        // arrays on every call), three values long; without it they are trimmed copies of longer ones
+        PoseBuffer sized = new PoseBuffer("t.txt", "t", 2, TimestampOrder.REFUSE_UNSORTED, Long.MAX_VALUE).capacity(3);
+        PoseBuffer grown = new PoseBuffer("t.txt", "t", 2, TimestampOrder.REFUSE_UNSORTED, Long.MAX_VALUE);
+        for (int i = 0; i < 3; i++) {
+            assertEquals(PoseBuffer.ACCEPTED, sized.add(new double[] {i, 10 * i}, i + 1));
+            assertEquals(PoseBuffer.ACCEPTED, grown.add(new double[] {i, 10 * i}, i + 1));
+        }
+        double[][] first = sized.finish("nothing");
+        double[][] again = sized.finish("nothing");
+        assertArrayEquals(new double[] {0, 10, 20}, first[1], 0.0);
+        assertEquals(3, first[0].length);
+        assertSame(first[0], again[0]);
+        assertSame(first[1], again[1]);
+        assertNotSame(grown.finish("nothing")[1], grown.finish("nothing")[1]);
     }
 }
