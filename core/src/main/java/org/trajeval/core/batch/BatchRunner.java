@@ -23,8 +23,9 @@ import org.trajeval.core.report.ReportJson;
 
 /**
  * Scores many pairs in one process: each pair read, evaluated ({@link Evaluator#evaluate}) and its
- * report written (atomically: temporary file, fsync, rename) into the report folder as
- * {@code NAME.json}, then forgotten but for its summary row; finally {@link BatchSummary#FILE}.
+ * report written (atomically: temporary file, fsync, rename; by a {@link ReportWriter} while the
+ * next pair is scored) into the report folder as {@code NAME.json}, then forgotten but for its
+ * summary row; finally {@link BatchSummary#FILE}.
  * Pairs are scored one per thread, several at once; a pair that cannot be scored is a failed row
  * with its reason and the batch goes on.
  */
