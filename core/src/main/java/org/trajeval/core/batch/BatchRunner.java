@@ -23,8 +23,9 @@ import org.trajeval.core.report.ReportJson;
 
 /**
  * Scores many pairs in one process: each pair read, evaluated ({@link Evaluator#evaluate}) and its
- * report written (atomically: temporary file, fsync, rename) into the report folder as
- * {@code NAME.json}, then forgotten but for its summary row; finally {@link BatchSummary#FILE}.
+ * report written (atomically: temporary file, fsync, rename; by a {@link ReportWriter} while the
+ * next pair is scored) into the report folder as {@code NAME.json}, then forgotten but for its
+ * summary row; finally {@link BatchSummary#FILE}.
  * Pairs are scored one per thread, several at once; a pair that cannot be scored is a failed row
  * with its reason and the batch goes on.
  */
@@ -42,18 +43,30 @@ public final class BatchRunner {
      */
     public static BatchResult score(BatchPair pair, SettingValues base, String table, ReadOptions limits,
             PathResolver paths, Path reportDir) {
+        BatchResult[] row = new BatchResult[1];
+        score(pair, base, table, limits, paths, reportDir, null, r -> row[0] = r);
+        return row[0];
+    }
+
+    /**
+     * Scores one pair and hands its report to {@code writer} (written on the calling thread when
+     * null); {@code finished} receives the row once the report is written or the pair failed.
+     */
+    private static void score(BatchPair pair, SettingValues base, String table, ReadOptions limits,
+            PathResolver paths, Path reportDir, ReportWriter writer, Consumer<BatchResult> finished) {
+        EvaluationReport report;
+        String json;
         try {
-            EvaluationReport report = evaluate(pair, base, table + ":" + pair.line(), limits, paths);
-            String file = pair.reportName() + ".json";
-            try {
-                ReportJson.writeAtomically(reportDir.resolve(file), ReportJson.toJson(report) + "\n");
-            } catch (java.io.UncheckedIOException e) {
-                return BatchResult.failed(pair, BatchResult.WRITE_FAILED, "cannot write " + reportDir.resolve(file)
-                        + ": " + e.getCause().getMessage());
-            }
-            return BatchResult.scored(pair, report, file);
+            report = evaluate(pair, base, table + ":" + pair.line(), limits, paths);
+            json = ReportJson.toJson(report) + "\n";
         } catch (RuntimeException e) { // bad input, or a bug: the row says which, the batch goes on
-            return failed(pair, e);
+            finished.accept(failed(pair, e));
+            return;
+        }
+        if (writer == null) {
+            finished.accept(ReportWriter.writeNow(pair, report, json, reportDir));
+        } else {
+            writer.write(pair, report, json, reportDir, finished);
         }
     }
 
@@ -104,18 +117,23 @@ public final class BatchRunner {
 
     /**
      * Scores every pair, {@code parallelism.threads()} pairs at a time (each pair on one thread),
-     * then writes the summary.
+     * the reports written by a {@link ReportWriter} while the next pairs are scored; then writes
+     * the summary.
      *
-     * @param done called with each row as it is finished, from the worker threads
+     * @param done called with each row once its report is written (or it failed), from the worker
+     *     threads or the report writer's
      * @return the rows in table order
      */
     public static List<BatchResult> run(List<BatchPair> pairs, SettingValues base, String table, ReadOptions limits,
             PathResolver paths, Path reportDir, Parallelism parallelism, Consumer<BatchResult> done) {
         BatchResult[] out = new BatchResult[pairs.size()];
-        parallelism.forEach(out.length, k -> {
-            out[k] = score(pairs.get(k), base, table, limits, paths, reportDir);
-            done.accept(out[k]);
-        });
+        try (ReportWriter writer = new ReportWriter()) {
+            parallelism.forEach(out.length, k -> score(pairs.get(k), base, table, limits, paths, reportDir, writer,
+                    r -> {
+                        out[k] = r;
+                        done.accept(r);
+                    }));
+        }
         List<BatchResult> rows = Arrays.asList(out);
         ReportJson.writeAtomically(reportDir.resolve(BatchSummary.FILE), BatchSummary.csv(rows));
         return rows;

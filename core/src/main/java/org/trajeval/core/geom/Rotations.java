@@ -313,56 +313,13 @@ public final class Rotations {
     }
 
     /**
-     * {@link #slerp(double[], double[], double, double[])} into {@code out[o..o+4)}, without
-     * allocating (the components are kept in locals; same operations in the same order).
+     * {@link #slerp(double[], double[], double, double[])} into {@code out[o..o+4)} (one
+     * {@link Slerp}; keep one to interpolate many fractions on a segment).
      */
     public static void slerp(double[] q0, double[] q1, double f, double[] out, int o) {
-        double n0 = Math.sqrt(q0[0] * q0[0] + q0[1] * q0[1] + q0[2] * q0[2] + q0[3] * q0[3]);
-        double n1 = Math.sqrt(q1[0] * q1[0] + q1[1] * q1[1] + q1[2] * q1[2] + q1[3] * q1[3]);
-        double a0 = q0[0] / n0;
-        double a1 = q0[1] / n0;
-        double a2 = q0[2] / n0;
-        double a3 = q0[3] / n0;
-        double b0 = q1[0] / n1;
-        double b1 = q1[1] / n1;
-        double b2 = q1[2] / n1;
-        double b3 = q1[3] / n1;
-        if (f == 0.0) {
-            put(out, o, a0, a1, a2, a3);
-            return;
-        }
-        if (f == 1.0) {
-            put(out, o, b0, b1, b2, b3);
-            return;
-        }
-        double d = a0 * b0 + a1 * b1 + a2 * b2 + a3 * b3;
-        if (Math.abs(Math.abs(d) - 1.0) < EPS4) {
-            put(out, o, a0, a1, a2, a3);
-            return;
-        }
-        if (d < 0.0) {
-            d = -d;
-            b0 = -b0;
-            b1 = -b1;
-            b2 = -b2;
-            b3 = -b3;
-        }
-        double angle = StrictAcos.acos(d); // Math.acos's bits, without its slow software square root
-        if (Math.abs(angle) < EPS4) {
-            put(out, o, a0, a1, a2, a3);
-            return;
-        }
-        double isin = 1.0 / Math.sin(angle);
-        double s0 = Math.sin((1.0 - f) * angle) * isin;
-        double s1 = Math.sin(f * angle) * isin;
-        put(out, o, a0 * s0 + b0 * s1, a1 * s0 + b1 * s1, a2 * s0 + b2 * s1, a3 * s0 + b3 * s1);
-    }
-
-    private static void put(double[] out, int o, double w, double x, double y, double z) {
-        out[o] = w;
-        out[o + 1] = x;
-        out[o + 2] = y;
-        out[o + 3] = z;
+        Slerp s = new Slerp();
+        s.ends(q0[0], q0[1], q0[2], q0[3], q1[0], q1[1], q1[2], q1[3]);
+        s.at(f, out, o);
     }
 
     /**

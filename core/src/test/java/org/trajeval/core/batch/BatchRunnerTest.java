@@ -130,4 +130,32 @@ class BatchRunnerTest {
         }
         assertEquals(summaryOne, Files.readString(dir.resolve("reports/summary.csv")));
     }
+
+    @Test
+    void aReportThatCannotBeWrittenIsAWriteFailedRowAndEveryOtherRowIsScored() throws IOException {
+        line("gt.csv", 0.0);
+        line("left.csv", 0.1);
+        StringBuilder table = new StringBuilder("name,ref,est,alignment\n");
+        for (int k = 0; k < 3 * ReportWriter.QUEUED; k++) {
+            table.append("p").append(k).append(",gt.csv,left.csv,none\n");
+        }
+        // a folder that is not empty where report p5.json should go: the rename onto it fails
+        Files.createDirectories(dir.resolve("reports/p5.json/keep"));
+        List<BatchResult> rows = runTable(table.toString(), 2);
+        assertEquals(3 * ReportWriter.QUEUED, rows.size());
+        for (int k = 0; k < rows.size(); k++) {
+            BatchResult r = rows.get(k);
+            if (k == 5) {
+                assertEquals(BatchResult.WRITE_FAILED, r.failureReason());
+                assertTrue(r.failureDetail().startsWith("cannot write " + dir.resolve("reports/p5.json")),
+                        r.failureDetail());
+            } else {
+                assertTrue(r.ok(), r.failureDetail());
+                assertEquals("p" + k + ".json", r.reportFile());
+                assertTrue(Files.isRegularFile(dir.resolve("reports/p" + k + ".json")));
+            }
+        }
+        List<String> summary = Files.readAllLines(dir.resolve("reports/summary.csv"));
+        assertTrue(summary.get(6).contains(",failed," + BatchResult.WRITE_FAILED + ","), summary.get(6));
+    }
 }
