@@ -31,6 +31,10 @@ final class NumericRows {
     private int minFields;
     private String layout = "";
     private long countSetAtLine;
+    /** True when the selected fields are the first ones, in order ({@code select[k] == k}). */
+    private boolean selectsPrefix;
+    /** The bytes that end a number's field (a {@link DecimalScanner#byteSet}); 0 when the prefix paths do not apply. */
+    private final long fieldEnds;
 
     /**
      * @param quotesNeedCsv when true a quote character anywhere in a line throws
@@ -41,6 +45,9 @@ final class NumericRows {
         this.source = source;
         this.delimiter = delimiter;
         this.quotesNeedCsv = quotesNeedCsv;
+        char d = (char) (delimiter & 0xFF);
+        this.fieldEnds = delimiter == WHITESPACE ? DecimalScanner.byteSet(' ', '\t', '\n', '\r')
+                : d < 64 && d != ' ' && d != '\t' ? DecimalScanner.byteSet(' ', '\t', '\n', '\r', d) : 0L;
     }
 
     /**
@@ -60,9 +67,12 @@ final class NumericRows {
         }
         this.slotOfField = new int[max + 1];
         java.util.Arrays.fill(slotOfField, -1);
+        boolean prefix = true;
         for (int k = 0; k < fieldIndex.length; k++) {
             slotOfField[fieldIndex[k]] = k;
+            prefix &= fieldIndex[k] == k;
         }
+        this.selectsPrefix = prefix;
     }
 
     /** Every data line must have exactly {@code n} fields; {@code describe} says which, for messages. */
@@ -136,6 +146,14 @@ final class NumericRows {
     private boolean parseInOnePass(double[] row) {
         final byte[] b = lines.buffer();
         final int bound = lines.completeLinesEnd();
+        if (selectsPrefix && fieldEnds != 0 && bound + DecimalScanner.SHORT_WINDOW <= b.length) {
+            if (delimiter != WHITESPACE) {
+                return parseInOnePass(row, b, bound, delimiter);
+            }
+            if (exactFields == select.length) {
+                return parseInOnePass(row, b, bound);
+            }
+        }
         final int[] slots = slotOfField;
         final int fields = exactFields;
         int p = lines.position();
@@ -238,6 +256,111 @@ final class NumericRows {
         }
         lines.acceptLine(newline);
         return true;
+    }
+
+    /**
+     * {@link #parseInOnePass} for fields separated by spaces and tabs, every field selected (TUM,
+     * KITTI): no field map, and each number's end checked in the scanner's own word
+     * ({@link DecimalScanner#scanShort}). Every byte read lies before {@code bound}, or within
+     * {@link DecimalScanner#SHORT_WINDOW} bytes after it, below {@code b.length}.
+     */
+    private boolean parseInOnePass(double[] row, byte[] b, int bound) {
+        final int fields = exactFields;
+        final long ends = fieldEnds;
+        final DecimalScanner s = scanner;
+        int p = lines.position();
+        byte c = b[p];
+        for (int k = 0; k < fields; k++) {
+            while (c == ' ' || c == '\t') {
+                c = b[++p];
+            }
+            int e = s.scanShort(b, p, bound, ends);
+            if (e < 0) {
+                e = scanOther(b, p, bound);
+                if (e < 0 || !endsWhitespaceField(b, e)) {
+                    return false;
+                }
+            }
+            row[k] = s.value();
+            p = e;
+            c = b[p];
+        }
+        while (c == ' ' || c == '\t') {
+            c = b[++p];
+        }
+        return acceptLineEnd(b, p, c);
+    }
+
+    /**
+     * {@link #parseInOnePass} for delimited fields whose selected ones come first, in order (the
+     * planar CSV {@code t,x,y,yaw}, EuRoC): as {@link #parseBlankSeparated}, then the unselected
+     * fields skipped up to their delimiter (a quote among them leaves the line to the careful path).
+     */
+    private boolean parseInOnePass(double[] row, byte[] b, int bound, byte d) {
+        final int fields = exactFields;
+        final int selected = select.length;
+        final long ends = fieldEnds;
+        final DecimalScanner s = scanner;
+        int p = lines.position();
+        byte c = b[p];
+        for (int k = 0; k < selected; k++) {
+            while (c == ' ' || c == '\t') {
+                c = b[++p];
+            }
+            int e = s.scanShort(b, p, bound, ends);
+            if (e < 0) {
+                e = scanOther(b, p, bound);
+                if (e < 0) {
+                    return false;
+                }
+            }
+            row[k] = s.value();
+            p = e;
+            c = b[p];
+            while (c == ' ' || c == '\t') {
+                c = b[++p];
+            }
+            if (k + 1 < fields) {
+                if (c != d) {
+                    return false;
+                }
+                c = b[++p];
+            }
+        }
+        for (int f = selected; f < fields; f++) {
+            while (c != d && c != '\n') {
+                if (c == '"') {
+                    return false;
+                }
+                c = b[++p]; // a '\r' before the '\n' ends up in this unselected field, unread
+            }
+            if (f + 1 < fields) {
+                if (c != d) {
+                    return false;
+                }
+                c = b[++p];
+            }
+        }
+        return acceptLineEnd(b, p, c);
+    }
+
+    /** The prefix paths' number that {@link DecimalScanner#scanShort} leaves: @return its end, or -1 if none or not finite. */
+    private int scanOther(byte[] b, int p, int bound) {
+        int e = scanner.scan(b, p, bound);
+        return e == p || Double.isInfinite(scanner.value()) ? -1 : e;
+    }
+
+    /** Takes the line if {@code c = b[p]} is its end ('\n', or '\r' before one). @return false if it is not */
+    private boolean acceptLineEnd(byte[] b, int p, byte c) {
+        if (c == '\n') {
+            lines.acceptLine(p);
+            return true;
+        }
+        if (c == '\r' && b[p + 1] == '\n') {
+            lines.acceptLine(p + 1);
+            return true;
+        }
+        return false;
     }
 
     /** @return true if {@code b[e]} ends a field separated by spaces and tabs: a blank, or the line end */
