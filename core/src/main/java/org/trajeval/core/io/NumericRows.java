@@ -8,19 +8,17 @@ import org.trajeval.core.InputProblem;
  * Splits the lines of a {@link ByteLines} into fields and parses the selected fields as numbers,
  * in place and without allocating. Blank lines and lines whose first non-blank character is
  * {@code #} are skipped. Fields are separated by one delimiter byte (surrounding spaces and tabs
- * trimmed) or by runs of spaces and tabs ({@link #WHITESPACE}).
+ * trimmed) or by runs of spaces and tabs ({@link #WHITESPACE}). Most lines take a one-pass path
+ * that splits and scans together; the rest, and every refusal, the careful path ({@link LineFields}).
  */
 final class NumericRows {
     /** Delimiter value meaning "runs of spaces and tabs". */
-    static final byte WHITESPACE = 0;
+    static final byte WHITESPACE = LineFields.BLANKS;
 
     private final ByteLines lines;
     private final String source;
     private final byte delimiter;
-    private final boolean quotesNeedCsv;
-    private int[] fieldStart = new int[32];
-    private int[] fieldEnd = new int[32];
-    private int count;
+    private final LineFields fields;
 
     private final DecimalScanner scanner = new DecimalScanner();
     private int[] select = new int[0];
@@ -44,7 +42,7 @@ final class NumericRows {
         this.lines = lines;
         this.source = source;
         this.delimiter = delimiter;
-        this.quotesNeedCsv = quotesNeedCsv;
+        this.fields = new LineFields(delimiter, quotesNeedCsv);
         char d = (char) (delimiter & 0xFF);
         this.fieldEnds = delimiter == WHITESPACE ? DecimalScanner.byteSet(' ', '\t', '\n', '\r')
                 : d < 64 && d != ' ' && d != '\t' ? DecimalScanner.byteSet(' ', '\t', '\n', '\r', d) : 0L;
@@ -97,7 +95,7 @@ final class NumericRows {
         if (!nextDataLine()) {
             return false;
         }
-        split(lines.buffer(), lines.start(), lines.end());
+        fields.split(lines.buffer(), lines.start(), lines.end());
         return true;
     }
 
@@ -137,7 +135,9 @@ final class NumericRows {
      * The fast path: the line at {@link ByteLines#position()} is split and its numbers scanned in
      * one pass, which also finds its end (no separate search for the '\n'); the line is then taken
      * with {@link ByteLines#acceptLine}. Only called when the whole line is in the buffer, so every
-     * byte looked at lies before the buffer's last '\n'.
+     * byte looked at lies before the buffer's last '\n' (the scanner's words up to
+     * {@link ByteLines#READ_AHEAD} bytes after it). Selections of the first fields in order take the
+     * overloads below, without the field map; others the general loop here.
      *
      * @return false on anything unusual (a comment or blank line, a wrong count, a bad or
      *     non-finite number, a quote), leaving the line unread; {@link #next} then reads it on the
@@ -259,10 +259,11 @@ final class NumericRows {
     }
 
     /**
-     * {@link #parseInOnePass} for fields separated by spaces and tabs, every field selected (TUM,
-     * KITTI): no field map, and each number's end checked in the scanner's own word
+     * {@link #parseInOnePass(double[])} for fields separated by spaces and tabs, every field
+     * selected (TUM, KITTI): no field map, and each number's end checked in the scanner's own word
      * ({@link DecimalScanner#scanShort}). Every byte read lies before {@code bound}, or within
-     * {@link DecimalScanner#SHORT_WINDOW} bytes after it, below {@code b.length}.
+     * {@link DecimalScanner#SHORT_WINDOW} bytes after it, below {@code b.length} (a method of the
+     * same name, so that the launcher's inlining directive for it applies).
      */
     private boolean parseInOnePass(double[] row, byte[] b, int bound) {
         final int fields = exactFields;
@@ -292,8 +293,8 @@ final class NumericRows {
     }
 
     /**
-     * {@link #parseInOnePass} for delimited fields whose selected ones come first, in order (the
-     * planar CSV {@code t,x,y,yaw}, EuRoC): as {@link #parseBlankSeparated}, then the unselected
+     * {@link #parseInOnePass(double[])} for delimited fields whose selected ones come first, in
+     * order (the planar CSV {@code t,x,y,yaw}, EuRoC): as {@link #parseInOnePass(double[], byte[], int)}, then the unselected
      * fields skipped up to their delimiter (a quote among them leaves the line to the careful path).
      */
     private boolean parseInOnePass(double[] row, byte[] b, int bound, byte d) {
@@ -372,12 +373,12 @@ final class NumericRows {
     /** The careful path: split, check the count, check each selected field; throws on a problem. */
     private void parseCarefully(double[] row) {
         final byte[] b = lines.buffer();
-        split(b, lines.start(), lines.end());
+        fields.split(b, lines.start(), lines.end());
         checkCount();
         for (int k = 0; k < select.length; k++) {
             int f = select[k];
-            int s = fieldStart[f];
-            int e = fieldEnd[f];
+            int s = fields.start(f);
+            int e = fields.end(f);
             if (scanner.scan(b, s, e) != e || s == e || Double.isInfinite(scanner.value())) {
                 throw badNumber(k, text(s, e));
             }
@@ -386,6 +387,7 @@ final class NumericRows {
     }
 
     private void checkCount() {
+        int count = fields.count();
         if (exactFields < 0) {
             if (count < minFields) {
                 throw wrongCount("at least " + minFields + " fields");
@@ -402,7 +404,7 @@ final class NumericRows {
 
     private InputException wrongCount(String expected) {
         return new InputException(source, lines.lineNumber(), null, InputProblem.WRONG_FIELD_COUNT,
-                "a line must have " + expected + " (" + layout + "), this one has " + count,
+                "a line must have " + expected + " (" + layout + "), this one has " + fields.count(),
                 lines.lineText());
     }
 
@@ -414,82 +416,20 @@ final class NumericRows {
                 "column '" + names[k] + "' must be a " + (nonFinite ? "finite number" : "number") + unit, found);
     }
 
-    private void split(byte[] b, int from, int to) {
-        count = 0;
-        if (delimiter == WHITESPACE) {
-            int i = from;
-            while (true) {
-                while (i < to && (b[i] == ' ' || b[i] == '\t')) {
-                    i++;
-                }
-                if (i >= to) {
-                    break;
-                }
-                int s = i;
-                while (i < to && b[i] != ' ' && b[i] != '\t') {
-                    i++;
-                }
-                add(s, i);
-            }
-            return;
-        }
-        final byte d = delimiter;
-        int s = from;
-        if (quotesNeedCsv) {
-            for (int i = from; i < to; i++) {
-                byte c = b[i];
-                if (c == d) {
-                    addTrimmed(b, s, i);
-                    s = i + 1;
-                } else if (c == '"') {
-                    throw new NeedsQuotedCsv();
-                }
-            }
-        } else {
-            for (int i = from; i < to; i++) {
-                if (b[i] == d) {
-                    addTrimmed(b, s, i);
-                    s = i + 1;
-                }
-            }
-        }
-        addTrimmed(b, s, to);
-    }
-
-    private void addTrimmed(byte[] b, int s, int e) {
-        while (s < e && (b[s] == ' ' || b[s] == '\t')) {
-            s++;
-        }
-        while (e > s && (b[e - 1] == ' ' || b[e - 1] == '\t')) {
-            e--;
-        }
-        add(s, e);
-    }
-
-    private void add(int s, int e) {
-        if (count == fieldStart.length) {
-            fieldStart = java.util.Arrays.copyOf(fieldStart, count * 2);
-            fieldEnd = java.util.Arrays.copyOf(fieldEnd, count * 2);
-        }
-        fieldStart[count] = s;
-        fieldEnd[count] = e;
-        count++;
-    }
-
     /** @return number of fields of the current line */
     int fieldCount() {
-        return count;
+        return fields.count();
     }
 
     /** @return field {@code i} of the current line as text (for headers and messages) */
     String field(int i) {
-        return text(fieldStart[i], fieldEnd[i]);
+        return text(fields.start(i), fields.end(i));
     }
 
     /** @return the selected field {@code k} of the current line as text (for messages; splits the line again) */
     String selectedText(int k) {
-        split(lines.buffer(), lines.start(), lines.end());
-        return select[k] < count ? field(select[k]) : "";
+        fields.split(lines.buffer(), lines.start(), lines.end());
+        return select[k] < fields.count() ? field(select[k]) : "";
     }
 
     private String text(int s, int e) {
