@@ -21,12 +21,17 @@ final class ByteLines implements Closeable {
     static final int BLOCK_BYTES = 1 << 20;
     /** Longest accepted line (bytes). */
     static final int MAX_LINE_BYTES = 1 << 26;
+    /**
+     * Bytes kept readable after the last byte read (never filled from the file): a parser may read
+     * this far past {@link #completeLinesEnd()} without checking (an eight-byte word at a line's end).
+     */
+    static final int READ_AHEAD = 64;
 
     private final String source;
     private final InputStream in;
     private final MessageDigest sha;
     private final long maxBytes;
-    private byte[] buf = new byte[BLOCK_BYTES];
+    private byte[] buf = new byte[BLOCK_BYTES + READ_AHEAD];
     private int pos;
     private int limit;
     private int scanFrom;
@@ -190,7 +195,8 @@ final class ByteLines implements Closeable {
     /**
      * @return offset just past the last '\n' in {@link #buffer()}: a line that starts at
      *     {@link #position()} below it ends in the buffer, with its '\n', before it (so a parser may
-     *     read ahead up to it, and a little past it: every byte below {@code buffer().length} is readable)
+     *     read ahead up to it, and past it: every byte below {@code completeLinesEnd() + READ_AHEAD}
+     *     lies in {@link #buffer()})
      */
     int completeLinesEnd() {
         return complete;
@@ -222,18 +228,20 @@ final class ByteLines implements Closeable {
             pos = 0;
             complete = 0; // fill is only called when no '\n' is left after pos
         }
-        if (limit == buf.length) {
-            if (buf.length >= MAX_LINE_BYTES) {
+        int capacity = buf.length - READ_AHEAD;
+        if (limit == capacity) {
+            if (capacity >= MAX_LINE_BYTES) {
                 throw new InputException(source, lineNumber + 1, null, InputProblem.TOO_LARGE,
                         "a line must be shorter than " + MAX_LINE_BYTES + " bytes (is this a trajectory file?)", null);
             }
-            byte[] bigger = new byte[buf.length * 2];
+            capacity *= 2;
+            byte[] bigger = new byte[capacity + READ_AHEAD];
             System.arraycopy(buf, 0, bigger, 0, limit);
             buf = bigger;
         }
         int n;
         try {
-            n = in.read(buf, limit, buf.length - limit);
+            n = in.read(buf, limit, capacity - limit);
         } catch (IOException e) {
             throw FileProblems.unreadable(source, e);
         }

@@ -32,8 +32,8 @@ final class DecimalScanner {
      *     {@code from}, {@link #value()} holds the number (possibly infinite on overflow)
      */
     int scan(byte[] b, int from, int to) {
-        if (from + 40 <= b.length) {
-            int end = scanShort(b, from, to);
+        if (from + SHORT_WINDOW <= b.length) {
+            int end = scanShort(b, from, to, ANY_END);
             if (end != LONG_NUMBER) {
                 return end;
             }
@@ -41,60 +41,130 @@ final class DecimalScanner {
         return scanAny(b, from, to);
     }
 
-    /** Returned by {@link #scanShort} for a number it leaves to {@link #scanAny}. */
-    private static final int LONG_NUMBER = -1;
+    /** Returned by {@link #scanShort} for a number it leaves to {@link #scan}. */
+    static final int LONG_NUMBER = -1;
+    /** Bytes {@link #scanShort} may read from its {@code from}. */
+    static final int SHORT_WINDOW = 40;
     private static final long[] LONG_POWERS_OF_TEN = {
         1L, 10L, 100L, 1_000L, 10_000L, 100_000L, 1_000_000L, 10_000_000L, 100_000_000L};
     private static final long ZEROS = 0x3030303030303030L;
     private static final long ABOVE_NINE = 0x7676767676767676L;
     private static final long HIGH_BITS = 0x8080808080808080L;
+    /** A {@code ends} argument of {@link #scanShort}: any byte but an exponent's may follow the number. */
+    static final long ANY_END = -1L;
+    /** Largest exponent digit count {@link #scanShort} reads. */
+    private static final int SHORT_EXPONENT_DIGITS = 3;
 
     /**
-     * The common case without a loop per digit: {@code [+-]? d* [. d*]} with at most 16 digits
-     * on each side of the point and 18 in all, and no exponent. Each run of up to eight digits is
-     * found and summed in one eight-byte word (SWAR, as in fast_float), so a number such as
-     * {@code -31.499999} takes two words; its value is {@code m / 10^f} for the significand
-     * {@code m} (all its digits read as one integer) and {@code f} digits after the point, one
-     * IEEE division, exact by Clinger when {@code m <= 2^53} (both operands are then exact
-     * doubles, {@code f <= 18 <= 22}).
-     *
-     * <p>The end of the field is checked once, at the end: a number that runs past {@code to}
-     * (its digits went on in bytes that are not the field's) is left to {@link #scanAny}, as is
-     * anything else unusual. Needs 40 readable bytes from {@code from} (a sign, two runs of two
-     * words, a point).
-     *
-     * @return as {@link #scan}, or {@link #LONG_NUMBER} for anything else
+     * @return the set of bytes 0..63 whose bit is set: a {@code ends} argument of {@link #scanShort}
+     *     (bytes from 64 on cannot be in it)
      */
-    private int scanShort(byte[] b, int from, int to) {
+    static long byteSet(char... bytes) {
+        long set = 0;
+        for (char c : bytes) {
+            if (c < 64) {
+                set |= 1L << c;
+            }
+        }
+        return set;
+    }
+
+    /**
+     * The common case without a loop per digit: {@code [+-]? d* [. d*] ([eE] [+-]? d{1,3})?} with
+     * at most 16 digits on each side of the point and 18 in all, followed by {@code to} or by a
+     * byte in {@code ends}. Each run of up to eight digits is found and summed in one eight-byte
+     * word (SWAR, as in fast_float), so a number such as {@code -31.499999} takes two words; the
+     * byte after a run is read from the same word (no second load), and decides whether a point,
+     * an exponent or the number's end follows. The value is {@code m / 10^f} (or
+     * {@code m * 10^k}) for the significand {@code m} (all its digits read as one integer) and
+     * {@code f} digits after the point less the exponent: one IEEE division or multiplication,
+     * exact by Clinger when {@code m <= 2^53} and {@code |k| <= 22} (both operands are then exact
+     * doubles); a larger {@code m} goes to fastdoubleparser (without an exponent: at most 18
+     * digits, so never infinite), a larger {@code |k|} to {@link #scan}. A value found here is
+     * always finite.
+     *
+     * <p>A number that runs past {@code to} (its digits went on in bytes that are not the field's),
+     * or is followed by a byte not in {@code ends}, is left to {@link #scan}, as is anything else
+     * unusual. Needs {@link #SHORT_WINDOW} readable bytes from {@code from}.
+     *
+     * @param ends the bytes that may follow the number before {@code to} (a {@link #byteSet}); the
+     *     fast line parser passes its field ends, {@link #scan} none
+     * @return the index just past the number, or {@link #LONG_NUMBER} for anything else
+     */
+    int scanShort(byte[] b, int from, int to, long ends) {
         int i = from;
         byte first = b[i];
         boolean negative = first == '-';
         if (negative || first == '+') {
             i++;
         }
-        final int intStart = i;
-        long t = (long) LONGS.get(b, i) - ZEROS;
+        long raw = (long) LONGS.get(b, i);
+        long t = raw - ZEROS;
         int n = digitRun(t);
-        long m;
-        if (n < 8) {
-            m = leadingDigits(t, n);
-            i += n;
-        } else {
-            long u = (long) LONGS.get(b, i + 8) - ZEROS;
-            int n2 = digitRun(u);
-            if (n2 == 8) {
-                return LONG_NUMBER;
-            }
-            m = sumDigits(t) * LONG_POWERS_OF_TEN[n2] + leadingDigits(u, n2);
-            i += 8 + n2;
+        if (n == 8) {
+            return scanLongInteger(b, from, to, ends, i, t, negative);
         }
-        final int intDigits = i - intStart;
+        long m;
+        long next; // the byte after the last digit read, minus '0', in its lowest byte
         int fracDigits = 0;
-        if (b[i] == '.') {
+        if ((byte) (t >>> (n << 3)) == POINT) {
+            // the point lies in the first word: the word from the next byte supplies the digits after
+            // it, so one word holds the first eight digits of both sides, the point taken out
+            long before = (1L << (n << 3)) - 1;
+            long w = ((raw & before) | ((long) LONGS.get(b, i + 1) & ~before)) - ZEROS;
+            int l = digitRun(w);
+            if (l < 8) {
+                m = leadingDigits(w, l);
+                next = w >>> (l << 3);
+                fracDigits = l - n;
+            } else {
+                long u = (long) LONGS.get(b, i + 9) - ZEROS;
+                int l2 = digitRun(u);
+                if (l2 < 8) {
+                    m = sumDigits(w) * LONG_POWERS_OF_TEN[l2] + leadingDigits(u, l2);
+                    next = u >>> (l2 << 3);
+                    fracDigits = 8 + l2 - n;
+                } else {
+                    long v = (long) LONGS.get(b, i + 17) - ZEROS;
+                    int l3 = digitRun(v);
+                    if (l3 > 2) {
+                        return LONG_NUMBER; // more than 18 digits
+                    }
+                    m = (sumDigits(w) * 100_000_000L + sumDigits(u)) * LONG_POWERS_OF_TEN[l3] + leadingDigits(v, l3);
+                    next = v >>> (l3 << 3);
+                    fracDigits = 16 + l3 - n;
+                }
+            }
+            i += n + 1 + fracDigits;
+        } else {
+            m = leadingDigits(t, n);
+            next = t >>> (n << 3);
+            i += n;
+        }
+        return finish(b, from, to, ends, i, negative, m, next, n + fracDigits, fracDigits);
+    }
+
+    /** The byte '.' minus '0'. */
+    private static final byte POINT = (byte) ('.' - '0');
+
+    /** {@link #scanShort} for a number with eight or more digits before the point ({@code t}: the first eight). */
+    private int scanLongInteger(byte[] b, int from, int to, long ends, int i, long t, boolean negative) {
+        long u = (long) LONGS.get(b, i + 8) - ZEROS;
+        int n2 = digitRun(u);
+        if (n2 == 8) {
+            return LONG_NUMBER;
+        }
+        long m = sumDigits(t) * LONG_POWERS_OF_TEN[n2] + leadingDigits(u, n2);
+        long next = u >>> (n2 << 3);
+        int intDigits = 8 + n2;
+        i += intDigits;
+        int fracDigits = 0;
+        if ((byte) next == POINT) {
             long f = (long) LONGS.get(b, i + 1) - ZEROS;
             int k = digitRun(f);
             if (k < 8) {
                 m = m * LONG_POWERS_OF_TEN[k] + leadingDigits(f, k);
+                next = f >>> (k << 3);
                 fracDigits = k;
             } else {
                 long g = (long) LONGS.get(b, i + 9) - ZEROS;
@@ -103,23 +173,77 @@ final class DecimalScanner {
                     return LONG_NUMBER;
                 }
                 m = (m * 100_000_000L + sumDigits(f)) * LONG_POWERS_OF_TEN[k2] + leadingDigits(g, k2);
+                next = g >>> (k2 << 3);
                 fracDigits = 8 + k2;
             }
-            if (intDigits + fracDigits > 0) {
-                i += 1 + fracDigits;
-            }
+            i += 1 + fracDigits;
         }
-        int digits = intDigits + fracDigits;
-        if (digits == 0 || digits > 18 || i > to || i < to && (b[i] == 'e' || b[i] == 'E')) {
+        return finish(b, from, to, ends, i, negative, m, next, intDigits + fracDigits, fracDigits);
+    }
+
+    /**
+     * The end of {@link #scanShort}: the number's digits are read ({@code m}, {@code digits} of
+     * them, {@code fracDigits} after the point, {@code b[i]} the next byte, also the lowest byte of
+     * {@code next} less '0'); checks what follows, reads an exponent, sets the value.
+     */
+    private int finish(byte[] b, int from, int to, long ends, int i, boolean negative, long m, long next, int digits,
+            int fracDigits) {
+        if (digits == 0 || digits > 18 || i > to) {
             return LONG_NUMBER;
         }
+        if (i < to) {
+            int c = (int) (next + '0') & 0xFF;
+            if (c == 'e' || c == 'E') {
+                return scanExponent(b, from, to, ends, i, negative, m, fracDigits);
+            }
+            if (ends != ANY_END && (c >= 64 || (ends >>> c & 1) == 0)) {
+                return LONG_NUMBER;
+            }
+        }
+        value = exactQuotient(b, from, i, negative, m, fracDigits);
+        return i;
+    }
+
+    /**
+     * The rest of {@link #scanShort} for a number with an exponent ({@code b[e]} is its 'e' or 'E'):
+     * a sign and one to {@link #SHORT_EXPONENT_DIGITS} digits; {@code m * 10^(exponent - f)} when
+     * that is exact (so always finite), else {@link #LONG_NUMBER}.
+     */
+    private int scanExponent(byte[] b, int from, int to, long ends, int e, boolean negative, long m, int fracDigits) {
+        int j = e + 1;
+        byte c = b[j];
+        boolean negativeExponent = c == '-';
+        if (negativeExponent || c == '+') {
+            c = b[++j];
+        }
+        int expStart = j;
+        int exponent = 0;
+        while (c >= '0' && c <= '9') {
+            if (j - expStart == SHORT_EXPONENT_DIGITS) {
+                return LONG_NUMBER;
+            }
+            exponent = exponent * 10 + (c - '0');
+            c = b[++j];
+        }
+        if (j == expStart || j > to || j < to && ends != ANY_END && (c >= 64 || (ends >>> c & 1) == 0)) {
+            return LONG_NUMBER;
+        }
+        int k = (negativeExponent ? -exponent : exponent) - fracDigits;
+        if (m > EXACT_SIGNIFICAND || k < -22 || k > 22) {
+            return LONG_NUMBER; // not exact here, perhaps not even finite
+        }
+        double v = k < 0 ? (double) m / POWERS_OF_TEN[-k] : (double) m * POWERS_OF_TEN[k];
+        value = negative ? -v : v;
+        return j;
+    }
+
+    /** @return the number {@code b[from..end)} without exponent: {@code -+ m / 10^f}, exact when m <= 2^53 */
+    private static double exactQuotient(byte[] b, int from, int end, boolean negative, long m, int fracDigits) {
         if (m <= EXACT_SIGNIFICAND) {
             double v = (double) m / POWERS_OF_TEN[fracDigits];
-            value = negative ? -v : v;
-        } else {
-            value = JavaDoubleParser.parseDouble(b, from, i - from);
+            return negative ? -v : v;
         }
-        return i;
+        return JavaDoubleParser.parseDouble(b, from, end - from);
     }
 
     /**

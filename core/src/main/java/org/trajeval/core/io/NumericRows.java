@@ -8,19 +8,17 @@ import org.trajeval.core.InputProblem;
  * Splits the lines of a {@link ByteLines} into fields and parses the selected fields as numbers,
  * in place and without allocating. Blank lines and lines whose first non-blank character is
  * {@code #} are skipped. Fields are separated by one delimiter byte (surrounding spaces and tabs
- * trimmed) or by runs of spaces and tabs ({@link #WHITESPACE}).
+ * trimmed) or by runs of spaces and tabs ({@link #WHITESPACE}). Most lines take a one-pass path
+ * that splits and scans together; the rest, and every refusal, the careful path ({@link LineFields}).
  */
 final class NumericRows {
     /** Delimiter value meaning "runs of spaces and tabs". */
-    static final byte WHITESPACE = 0;
+    static final byte WHITESPACE = LineFields.BLANKS;
 
     private final ByteLines lines;
     private final String source;
     private final byte delimiter;
-    private final boolean quotesNeedCsv;
-    private int[] fieldStart = new int[32];
-    private int[] fieldEnd = new int[32];
-    private int count;
+    private final LineFields fields;
 
     private final DecimalScanner scanner = new DecimalScanner();
     private int[] select = new int[0];
@@ -31,6 +29,10 @@ final class NumericRows {
     private int minFields;
     private String layout = "";
     private long countSetAtLine;
+    /** True when the selected fields are the first ones, in order ({@code select[k] == k}). */
+    private boolean selectsPrefix;
+    /** The bytes that end a number's field (a {@link DecimalScanner#byteSet}); 0 when the prefix paths do not apply. */
+    private final long fieldEnds;
 
     /**
      * @param quotesNeedCsv when true a quote character anywhere in a line throws
@@ -40,7 +42,10 @@ final class NumericRows {
         this.lines = lines;
         this.source = source;
         this.delimiter = delimiter;
-        this.quotesNeedCsv = quotesNeedCsv;
+        this.fields = new LineFields(delimiter, quotesNeedCsv);
+        char d = (char) (delimiter & 0xFF);
+        this.fieldEnds = delimiter == WHITESPACE ? DecimalScanner.byteSet(' ', '\t', '\n', '\r')
+                : d < 64 && d != ' ' && d != '\t' ? DecimalScanner.byteSet(' ', '\t', '\n', '\r', d) : 0L;
     }
 
     /**
@@ -60,9 +65,12 @@ final class NumericRows {
         }
         this.slotOfField = new int[max + 1];
         java.util.Arrays.fill(slotOfField, -1);
+        boolean prefix = true;
         for (int k = 0; k < fieldIndex.length; k++) {
             slotOfField[fieldIndex[k]] = k;
+            prefix &= fieldIndex[k] == k;
         }
+        this.selectsPrefix = prefix;
     }
 
     /** Every data line must have exactly {@code n} fields; {@code describe} says which, for messages. */
@@ -87,7 +95,7 @@ final class NumericRows {
         if (!nextDataLine()) {
             return false;
         }
-        split(lines.buffer(), lines.start(), lines.end());
+        fields.split(lines.buffer(), lines.start(), lines.end());
         return true;
     }
 
@@ -127,7 +135,9 @@ final class NumericRows {
      * The fast path: the line at {@link ByteLines#position()} is split and its numbers scanned in
      * one pass, which also finds its end (no separate search for the '\n'); the line is then taken
      * with {@link ByteLines#acceptLine}. Only called when the whole line is in the buffer, so every
-     * byte looked at lies before the buffer's last '\n'.
+     * byte looked at lies before the buffer's last '\n' (the scanner's words up to
+     * {@link ByteLines#READ_AHEAD} bytes after it). Selections of the first fields in order take the
+     * overloads below, without the field map; others the general loop here.
      *
      * @return false on anything unusual (a comment or blank line, a wrong count, a bad or
      *     non-finite number, a quote), leaving the line unread; {@link #next} then reads it on the
@@ -136,6 +146,14 @@ final class NumericRows {
     private boolean parseInOnePass(double[] row) {
         final byte[] b = lines.buffer();
         final int bound = lines.completeLinesEnd();
+        if (selectsPrefix && fieldEnds != 0 && bound + DecimalScanner.SHORT_WINDOW <= b.length) {
+            if (delimiter != WHITESPACE) {
+                return parseInOnePass(row, b, bound, delimiter);
+            }
+            if (exactFields == select.length) {
+                return parseInOnePass(row, b, bound);
+            }
+        }
         final int[] slots = slotOfField;
         final int fields = exactFields;
         int p = lines.position();
@@ -240,6 +258,112 @@ final class NumericRows {
         return true;
     }
 
+    /**
+     * {@link #parseInOnePass(double[])} for fields separated by spaces and tabs, every field
+     * selected (TUM, KITTI): no field map, and each number's end checked in the scanner's own word
+     * ({@link DecimalScanner#scanShort}). Every byte read lies before {@code bound}, or within
+     * {@link DecimalScanner#SHORT_WINDOW} bytes after it, below {@code b.length} (a method of the
+     * same name, so that the launcher's inlining directive for it applies).
+     */
+    private boolean parseInOnePass(double[] row, byte[] b, int bound) {
+        final int fields = exactFields;
+        final long ends = fieldEnds;
+        final DecimalScanner s = scanner;
+        int p = lines.position();
+        byte c = b[p];
+        for (int k = 0; k < fields; k++) {
+            while (c == ' ' || c == '\t') {
+                c = b[++p];
+            }
+            int e = s.scanShort(b, p, bound, ends);
+            if (e < 0) {
+                e = scanOther(b, p, bound);
+                if (e < 0 || !endsWhitespaceField(b, e)) {
+                    return false;
+                }
+            }
+            row[k] = s.value();
+            p = e;
+            c = b[p];
+        }
+        while (c == ' ' || c == '\t') {
+            c = b[++p];
+        }
+        return acceptLineEnd(b, p, c);
+    }
+
+    /**
+     * {@link #parseInOnePass(double[])} for delimited fields whose selected ones come first, in
+     * order (the planar CSV {@code t,x,y,yaw}, EuRoC): as {@link #parseInOnePass(double[], byte[], int)}, then the unselected
+     * fields skipped up to their delimiter (a quote among them leaves the line to the careful path).
+     */
+    private boolean parseInOnePass(double[] row, byte[] b, int bound, byte d) {
+        final int fields = exactFields;
+        final int selected = select.length;
+        final long ends = fieldEnds;
+        final DecimalScanner s = scanner;
+        int p = lines.position();
+        byte c = b[p];
+        for (int k = 0; k < selected; k++) {
+            while (c == ' ' || c == '\t') {
+                c = b[++p];
+            }
+            int e = s.scanShort(b, p, bound, ends);
+            if (e < 0) {
+                e = scanOther(b, p, bound);
+                if (e < 0) {
+                    return false;
+                }
+            }
+            row[k] = s.value();
+            p = e;
+            c = b[p];
+            while (c == ' ' || c == '\t') {
+                c = b[++p];
+            }
+            if (k + 1 < fields) {
+                if (c != d) {
+                    return false;
+                }
+                c = b[++p];
+            }
+        }
+        for (int f = selected; f < fields; f++) {
+            while (c != d && c != '\n') {
+                if (c == '"') {
+                    return false;
+                }
+                c = b[++p]; // a '\r' before the '\n' ends up in this unselected field, unread
+            }
+            if (f + 1 < fields) {
+                if (c != d) {
+                    return false;
+                }
+                c = b[++p];
+            }
+        }
+        return acceptLineEnd(b, p, c);
+    }
+
+    /** The prefix paths' number that {@link DecimalScanner#scanShort} leaves: @return its end, or -1 if none or not finite. */
+    private int scanOther(byte[] b, int p, int bound) {
+        int e = scanner.scan(b, p, bound);
+        return e == p || Double.isInfinite(scanner.value()) ? -1 : e;
+    }
+
+    /** Takes the line if {@code c = b[p]} is its end ('\n', or '\r' before one). @return false if it is not */
+    private boolean acceptLineEnd(byte[] b, int p, byte c) {
+        if (c == '\n') {
+            lines.acceptLine(p);
+            return true;
+        }
+        if (c == '\r' && b[p + 1] == '\n') {
+            lines.acceptLine(p + 1);
+            return true;
+        }
+        return false;
+    }
+
     /** @return true if {@code b[e]} ends a field separated by spaces and tabs: a blank, or the line end */
     private static boolean endsWhitespaceField(byte[] b, int e) {
         byte c = b[e];
@@ -249,12 +373,12 @@ final class NumericRows {
     /** The careful path: split, check the count, check each selected field; throws on a problem. */
     private void parseCarefully(double[] row) {
         final byte[] b = lines.buffer();
-        split(b, lines.start(), lines.end());
+        fields.split(b, lines.start(), lines.end());
         checkCount();
         for (int k = 0; k < select.length; k++) {
             int f = select[k];
-            int s = fieldStart[f];
-            int e = fieldEnd[f];
+            int s = fields.start(f);
+            int e = fields.end(f);
             if (scanner.scan(b, s, e) != e || s == e || Double.isInfinite(scanner.value())) {
                 throw badNumber(k, text(s, e));
             }
@@ -263,6 +387,7 @@ final class NumericRows {
     }
 
     private void checkCount() {
+        int count = fields.count();
         if (exactFields < 0) {
             if (count < minFields) {
                 throw wrongCount("at least " + minFields + " fields");
@@ -279,7 +404,7 @@ final class NumericRows {
 
     private InputException wrongCount(String expected) {
         return new InputException(source, lines.lineNumber(), null, InputProblem.WRONG_FIELD_COUNT,
-                "a line must have " + expected + " (" + layout + "), this one has " + count,
+                "a line must have " + expected + " (" + layout + "), this one has " + fields.count(),
                 lines.lineText());
     }
 
@@ -291,82 +416,20 @@ final class NumericRows {
                 "column '" + names[k] + "' must be a " + (nonFinite ? "finite number" : "number") + unit, found);
     }
 
-    private void split(byte[] b, int from, int to) {
-        count = 0;
-        if (delimiter == WHITESPACE) {
-            int i = from;
-            while (true) {
-                while (i < to && (b[i] == ' ' || b[i] == '\t')) {
-                    i++;
-                }
-                if (i >= to) {
-                    break;
-                }
-                int s = i;
-                while (i < to && b[i] != ' ' && b[i] != '\t') {
-                    i++;
-                }
-                add(s, i);
-            }
-            return;
-        }
-        final byte d = delimiter;
-        int s = from;
-        if (quotesNeedCsv) {
-            for (int i = from; i < to; i++) {
-                byte c = b[i];
-                if (c == d) {
-                    addTrimmed(b, s, i);
-                    s = i + 1;
-                } else if (c == '"') {
-                    throw new NeedsQuotedCsv();
-                }
-            }
-        } else {
-            for (int i = from; i < to; i++) {
-                if (b[i] == d) {
-                    addTrimmed(b, s, i);
-                    s = i + 1;
-                }
-            }
-        }
-        addTrimmed(b, s, to);
-    }
-
-    private void addTrimmed(byte[] b, int s, int e) {
-        while (s < e && (b[s] == ' ' || b[s] == '\t')) {
-            s++;
-        }
-        while (e > s && (b[e - 1] == ' ' || b[e - 1] == '\t')) {
-            e--;
-        }
-        add(s, e);
-    }
-
-    private void add(int s, int e) {
-        if (count == fieldStart.length) {
-            fieldStart = java.util.Arrays.copyOf(fieldStart, count * 2);
-            fieldEnd = java.util.Arrays.copyOf(fieldEnd, count * 2);
-        }
-        fieldStart[count] = s;
-        fieldEnd[count] = e;
-        count++;
-    }
-
     /** @return number of fields of the current line */
     int fieldCount() {
-        return count;
+        return fields.count();
     }
 
     /** @return field {@code i} of the current line as text (for headers and messages) */
     String field(int i) {
-        return text(fieldStart[i], fieldEnd[i]);
+        return text(fields.start(i), fields.end(i));
     }
 
     /** @return the selected field {@code k} of the current line as text (for messages; splits the line again) */
     String selectedText(int k) {
-        split(lines.buffer(), lines.start(), lines.end());
-        return select[k] < count ? field(select[k]) : "";
+        fields.split(lines.buffer(), lines.start(), lines.end());
+        return select[k] < fields.count() ? field(select[k]) : "";
     }
 
     private String text(int s, int e) {
