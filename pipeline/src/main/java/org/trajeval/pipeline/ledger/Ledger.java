@@ -71,7 +71,16 @@ public final class Ledger implements AutoCloseable {
         int latestVersion(String runId);
 
         /** Appends an entry and fsyncs the file. */
-        void append(LedgerEntry entry);
+        default void append(LedgerEntry entry) {
+            appendAll(List.of(entry));
+        }
+
+        /**
+         * Appends entries in order with one write and one fsync (a group commit): when it returns, every
+         * line is durable; when it throws, none counts in this process (a line cut short is cut off at the
+         * next open; complete lines written before the failure are read back by the next {@link #locked}).
+         */
+        void appendAll(List<LedgerEntry> entries);
     }
 
     /**
@@ -85,6 +94,19 @@ public final class Ledger implements AutoCloseable {
             return action.apply(view);
         } catch (IOException e) {
             throw new UncheckedIOException("ledger " + file + ": " + e.getMessage(), e);
+        } finally {
+            inProcess.unlock();
+        }
+    }
+
+    /**
+     * @return the highest version reported for the run id as far as this process has read, 0 when none
+     *     (no lock: a guess before writing a report; {@link #locked} decides)
+     */
+    public int probableLatestVersion(String runId) {
+        inProcess.lock();
+        try {
+            return view.latestVersion(runId);
         } finally {
             inProcess.unlock();
         }
@@ -150,10 +172,22 @@ public final class Ledger implements AutoCloseable {
         }
 
         @Override
-        public void append(LedgerEntry entry) {
+        public void appendAll(List<LedgerEntry> entries) {
+            if (entries.isEmpty()) {
+                return;
+            }
             try {
-                byte[] line = entry.toLine().getBytes(StandardCharsets.UTF_8);
-                ByteBuffer b = ByteBuffer.wrap(line);
+                byte[][] lines = new byte[entries.size()][];
+                int total = 0;
+                for (int i = 0; i < lines.length; i++) {
+                    lines[i] = entries.get(i).toLine().getBytes(StandardCharsets.UTF_8);
+                    total += lines[i].length;
+                }
+                ByteBuffer b = ByteBuffer.allocate(total);
+                for (byte[] line : lines) {
+                    b.put(line);
+                }
+                b.flip();
                 long start = channel.size();
                 long pos = start;
                 while (b.hasRemaining()) {
@@ -161,7 +195,11 @@ public final class Ledger implements AutoCloseable {
                 }
                 channel.force(false);
                 readPosition = pos;
-                index(entry, start, line.length - 1);
+                long offset = start;
+                for (int i = 0; i < lines.length; i++) {
+                    index(entries.get(i), offset, lines[i].length - 1);
+                    offset += lines[i].length;
+                }
             } catch (IOException e) {
                 throw new UncheckedIOException("could not append to the ledger " + file + ": " + e.getMessage(), e);
             }
