@@ -169,6 +169,7 @@ public final class ReportStore {
         PipelineReport report;
         ReportFiles.Staged staged;
         int stagedVersion;
+        Pending duplicateOf;
 
         Pending(RunJob job, ContentHash hash, EvaluationReport evaluation, Path plotsDraft, Instant now) {
             this.job = job;
@@ -214,17 +215,23 @@ public final class ReportStore {
                 Map<String, Pending> reportedNow = new HashMap<>(); // run id + content -> its run in this group
                 Map<String, Integer> latestNow = new HashMap<>(); // run id -> highest version in this group
                 List<Pending> toReport = new ArrayList<>();
+                List<Pending> duplicatesNow = new ArrayList<>(); // of a run reported earlier in this group
                 List<LedgerEntry> lines = new ArrayList<>();
                 for (Pending p : pendings) {
                     String runId = p.runId();
                     Optional<LedgerEntry> earlier = view.find(runId, p.hash.content());
-                    Pending sameGroup = reportedNow.get(runId + '\t' + p.hash.content());
-                    if (earlier.isPresent() || sameGroup != null) {
+                    if (earlier.isPresent()) {
                         p.discard();
-                        int v = earlier.isPresent() ? earlier.get().version() : sameGroup.stagedVersion;
-                        String source = earlier.isPresent() ? earlier.get().source() : sameGroup.job.source();
+                        int v = earlier.get().version();
                         p.complete(new Committed(new RunResult(Outcome.DUPLICATE, runId, v, reportFile(runId, v),
-                                null, source), null));
+                                null, earlier.get().source()), null));
+                        continue;
+                    }
+                    Pending sameGroup = reportedNow.get(runId + '\t' + p.hash.content());
+                    if (sameGroup != null) {
+                        p.discard();
+                        p.duplicateOf = sameGroup; // completed once that report's ledger line is durable
+                        duplicatesNow.add(p);
                         continue;
                     }
                     int version = Math.max(view.latestVersion(runId), latestNow.getOrDefault(runId, 0)) + 1;
@@ -259,6 +266,11 @@ public final class ReportStore {
                 for (Pending p : toReport) {
                     p.complete(new Committed(new RunResult(Outcome.REPORTED, p.runId(), p.stagedVersion,
                             reportFile(p.runId(), p.stagedVersion), null, null), p.report));
+                }
+                for (Pending p : duplicatesNow) {
+                    int v = p.duplicateOf.stagedVersion;
+                    p.complete(new Committed(new RunResult(Outcome.DUPLICATE, p.runId(), v, reportFile(p.runId(), v),
+                            null, p.duplicateOf.job.source()), null));
                 }
                 return null;
             });

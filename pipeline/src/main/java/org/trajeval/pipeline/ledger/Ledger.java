@@ -10,10 +10,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Function;
 
@@ -37,7 +37,9 @@ public final class Ledger implements AutoCloseable {
     private final Path file;
     private final FileChannel channel;
     private final ReentrantLock inProcess = new ReentrantLock();
-    private final Map<String, Known> byRun = new HashMap<>();
+    // written only under the in-process lock, after its line is in the file; read without it by the hints
+    // (probablyReported, probableLatestVersion: a worker asks while another one commits)
+    private final Map<String, Known> byRun = new ConcurrentHashMap<>();
     private long readPosition;
 
     private Ledger(Path file, FileChannel channel) {
@@ -104,12 +106,7 @@ public final class Ledger implements AutoCloseable {
      *     (no lock: a guess before writing a report; {@link #locked} decides)
      */
     public int probableLatestVersion(String runId) {
-        inProcess.lock();
-        try {
-            return view.latestVersion(runId);
-        } finally {
-            inProcess.unlock();
-        }
+        return view.latestVersion(runId);
     }
 
     /**
@@ -117,12 +114,7 @@ public final class Ledger implements AutoCloseable {
      *     (no lock: a fast check before scoring; {@link #locked} decides)
      */
     public boolean probablyReported(String runId, String contentHash) {
-        inProcess.lock();
-        try {
-            return lookup(runId, contentHash).isPresent();
-        } finally {
-            inProcess.unlock();
-        }
+        return lookup(runId, contentHash).isPresent();
     }
 
     /** @return every entry read so far, in file order (read back from the file) */
