@@ -3,6 +3,10 @@ package org.trajeval.pipeline;
 import java.nio.file.Path;
 import java.time.Clock;
 import java.time.Instant;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import java.util.function.BiConsumer;
 import org.trajeval.core.Version;
@@ -15,8 +19,15 @@ import org.trajeval.pipeline.ledger.LedgerEntry;
 /**
  * Files reports: {@code reports/RUN_ID.json} for a run's first content, {@code RUN_ID.vN.json}
  * for its N-th distinct content, each written atomically (temp file, fsync, rename, 0644) and
- * then recorded in the ledger. The decision "new, changed or already reported" and the write are
+ * then recorded in the ledger. The decision "new, changed or already reported" and the rename are
  * one section under the ledger's lock, so two workers (or processes) never report a run twice.
+ *
+ * <p>Group commit ({@link GroupCommit}): a report is written and fsync'd beside its name before the
+ * lock, for the version the ledger suggests (rewritten under the lock when another report took that
+ * version meanwhile); the runs that wait for the lock together are then committed in one section:
+ * their reports renamed into place, the folder fsync'd once, their ledger lines appended with one
+ * write and one fsync. For every run the order stays: report durable, then its ledger line durable,
+ * then {@link #commit} returns (and only then does the bundle move to done/).
  *
  * <p>Crash safety: a crash after the report but before the ledger line leaves a complete report;
  * the retry computes the same version and rewrites the same file with the same content.
@@ -25,8 +36,9 @@ public final class ReportStore {
     private final Path reportsDir;
     private final Ledger ledger;
     private final Clock clock;
-    private final BiConsumer<Path, String> writer;
+    private final ReportFiles files;
     private final CommitListener listener;
+    private final GroupCommit<Pending> group;
 
     /** Told of every report this store commits, after its file and ledger line are durable. */
     public interface CommitListener {
@@ -45,7 +57,7 @@ public final class ReportStore {
      * @param clock clock for {@code processed_at}
      */
     public ReportStore(Path reportsDir, Ledger ledger, Clock clock) {
-        this(reportsDir, ledger, clock, ReportJson::writeAtomically);
+        this(reportsDir, ledger, clock, ReportFiles.durable(), (id, v, f, r) -> { });
     }
 
     /**
@@ -53,21 +65,31 @@ public final class ReportStore {
      * it throws {@link java.io.UncheckedIOException} when the file cannot be written).
      */
     public ReportStore(Path reportsDir, Ledger ledger, Clock clock, BiConsumer<Path, String> writer) {
-        this(reportsDir, ledger, clock, writer, (id, v, f, r) -> { });
+        this(reportsDir, ledger, clock, ReportFiles.writtenBy(writer), (id, v, f, r) -> { });
     }
 
-    private ReportStore(Path reportsDir, Ledger ledger, Clock clock, BiConsumer<Path, String> writer,
-            CommitListener listener) {
+    private ReportStore(Path reportsDir, Ledger ledger, Clock clock, ReportFiles files, CommitListener listener) {
         this.reportsDir = reportsDir;
         this.ledger = ledger;
         this.clock = clock;
-        this.writer = writer;
+        this.files = files;
         this.listener = listener;
+        this.group = new GroupCommit<>(this::commitGroup);
+    }
+
+    /** As the public constructor, with the report files' two steps given (tests observe them). */
+    static ReportStore withFiles(Path reportsDir, Ledger ledger, Clock clock, ReportFiles files) {
+        return new ReportStore(reportsDir, ledger, clock, files, (id, v, f, r) -> { });
     }
 
     /** @return this store, also telling {@code l} of every committed report (e.g. the results store recorder) */
     public ReportStore withListener(CommitListener l) {
-        return new ReportStore(reportsDir, ledger, clock, writer, l);
+        return new ReportStore(reportsDir, ledger, clock, files, l);
+    }
+
+    /** @return how many group commits this store made (each one ledger fsync; tests) */
+    long groups() {
+        return group.groups();
     }
 
     /** @return the ledger */
@@ -117,7 +139,15 @@ public final class ReportStore {
      * @param plotsDraft a draft folder of figures ({@link RunPlots}), or null
      */
     public RunResult commit(RunJob job, ContentHash hash, EvaluationReport evaluation, Path plotsDraft) {
-        Committed c = commitLocked(job, hash, evaluation, plotsDraft);
+        Pending p = new Pending(job, hash, evaluation, plotsDraft, clock.instant());
+        if (plotsDraft == null) {
+            // written and fsync'd before the lock, for the version the ledger suggests now
+            String runId = job.metadata().runId();
+            if (!ledger.probablyReported(runId, hash.content())) {
+                p.stage(ledger.probableLatestVersion(runId) + 1);
+            }
+        }
+        Committed c = group.submit(p);
         RunResult r = c.result();
         if (r.outcome() == Outcome.REPORTED) {
             listener.committed(r.runId(), r.version(), r.report(), c.report());
@@ -129,38 +159,142 @@ public final class ReportStore {
     private record Committed(RunResult result, PipelineReport report) {
     }
 
-    private Committed commitLocked(RunJob job, ContentHash hash, EvaluationReport scored, Path plotsDraft) {
-        RunMetadata m = job.metadata();
-        return ledger.locked(view -> {
-            Optional<LedgerEntry> earlier = view.find(m.runId(), hash.content());
-            if (earlier.isPresent()) {
-                int v = earlier.get().version();
-                return new Committed(new RunResult(Outcome.DUPLICATE, m.runId(), v, reportFile(m.runId(), v), null,
-                        earlier.get().source()), null);
+    /** One run waiting for its group commit, with its report staged for a version (or not yet). */
+    private final class Pending extends GroupCommit.Request<Committed> {
+        final RunJob job;
+        final ContentHash hash;
+        final EvaluationReport evaluation;
+        final Path plotsDraft;
+        final Instant now;
+        PipelineReport report;
+        ReportFiles.Staged staged;
+        int stagedVersion;
+        Pending duplicateOf;
+
+        Pending(RunJob job, ContentHash hash, EvaluationReport evaluation, Path plotsDraft, Instant now) {
+            this.job = job;
+            this.hash = hash;
+            this.evaluation = evaluation;
+            this.plotsDraft = plotsDraft;
+            this.now = now;
+        }
+
+        String runId() {
+            return job.metadata().runId();
+        }
+
+        /** Writes (fsync'd, not in place) the report of {@code version}, replacing one staged before. */
+        void stage(int version) {
+            stage(version, evaluation);
+        }
+
+        void stage(int version, EvaluationReport scored) {
+            discard();
+            report = report(job, hash, version, now, scored);
+            staged = files.stage(reportFile(runId(), version), ReportJson.toJson(report));
+            stagedVersion = version;
+        }
+
+        void discard() {
+            if (staged != null) {
+                files.discard(staged);
+                staged = null;
             }
-            int version = view.latestVersion(m.runId()) + 1;
-            EvaluationReport evaluation = scored;
-            if (plotsDraft != null) {
-                try {
-                    RunPlots.publish(plotsDraft, plotsFolder(m.runId(), version));
-                } catch (java.io.IOException e) {
-                    evaluation = scored.withWarning(RunProcessor.plotFailed(e));
+        }
+    }
+
+    /**
+     * Commits a group under one ledger lock: decides each run (duplicate, or its version, counting the
+     * group's own earlier runs), renames the reports into place, fsyncs the folder once, appends the
+     * ledger lines with one fsync. A run whose report cannot be renamed fails alone; a failed ledger
+     * append fails every run of the group that was to be reported (retried later, as after a crash).
+     */
+    private void commitGroup(List<Pending> pendings) {
+        try {
+            ledger.locked(view -> {
+                Map<String, Pending> reportedNow = new HashMap<>(); // run id + content -> its run in this group
+                Map<String, Integer> latestNow = new HashMap<>(); // run id -> highest version in this group
+                List<Pending> toReport = new ArrayList<>();
+                List<Pending> duplicatesNow = new ArrayList<>(); // of a run reported earlier in this group
+                List<LedgerEntry> lines = new ArrayList<>();
+                for (Pending p : pendings) {
+                    String runId = p.runId();
+                    Optional<LedgerEntry> earlier = view.find(runId, p.hash.content());
+                    if (earlier.isPresent()) {
+                        p.discard();
+                        int v = earlier.get().version();
+                        p.complete(new Committed(new RunResult(Outcome.DUPLICATE, runId, v, reportFile(runId, v),
+                                null, earlier.get().source()), null));
+                        continue;
+                    }
+                    Pending sameGroup = reportedNow.get(runId + '\t' + p.hash.content());
+                    if (sameGroup != null) {
+                        p.discard();
+                        p.duplicateOf = sameGroup; // completed once that report's ledger line is durable
+                        duplicatesNow.add(p);
+                        continue;
+                    }
+                    int version = Math.max(view.latestVersion(runId), latestNow.getOrDefault(runId, 0)) + 1;
+                    try {
+                        if (p.plotsDraft != null) {
+                            EvaluationReport evaluation = p.evaluation;
+                            try {
+                                RunPlots.publish(p.plotsDraft, plotsFolder(runId, version));
+                            } catch (java.io.IOException e) {
+                                evaluation = p.evaluation.withWarning(RunProcessor.plotFailed(e));
+                            }
+                            p.stage(version, evaluation);
+                        } else if (p.staged == null || p.stagedVersion != version) {
+                            p.stage(version); // another report took the version guessed before the lock
+                        }
+                        files.publish(p.staged);
+                    } catch (RuntimeException e) {
+                        p.discard();
+                        p.fail(e);
+                        continue;
+                    }
+                    p.staged = null; // in place now
+                    reportedNow.put(runId + '\t' + p.hash.content(), p);
+                    latestNow.put(runId, version);
+                    toReport.add(p);
+                    lines.add(new LedgerEntry(runId, p.hash.content(), version, p.now.toEpochMilli(), p.job.source()));
+                }
+                if (!toReport.isEmpty()) {
+                    files.syncFolder(reportsDir);
+                    view.appendAll(lines);
+                }
+                for (Pending p : toReport) {
+                    p.complete(new Committed(new RunResult(Outcome.REPORTED, p.runId(), p.stagedVersion,
+                            reportFile(p.runId(), p.stagedVersion), null, null), p.report));
+                }
+                for (Pending p : duplicatesNow) {
+                    int v = p.duplicateOf.stagedVersion;
+                    p.complete(new Committed(new RunResult(Outcome.DUPLICATE, p.runId(), v, reportFile(p.runId(), v),
+                            null, p.duplicateOf.job.source()), null));
+                }
+                return null;
+            });
+        } finally {
+            for (Pending p : pendings) {
+                if (!p.isDone()) {
+                    p.discard();
                 }
             }
-            Instant now = clock.instant();
-            PipelineReport report = new PipelineReport(PipelineReport.SCHEMA, PipelineReport.SCHEMA_VERSION,
-                    Version.TOOL, m.runId(), m.robotId(), m.sequence(), m.method(), m.seed(), m.labels().site(),
-                    m.labels().softwareVersion(), m.labels().tags().isEmpty() ? null : m.labels().tags(),
-                    m.about().domain(), m.about().simulator(), m.about().scenario(),
-                    m.about().factors().isEmpty() ? null : m.about().factors(), m.about().environment(),
-                    m.about().modality(), m.about().groundTruth(), m.resources() == null ? null
-                            : new PipelineReport.Resources(m.resources().wallTimeS(), m.resources().peakMemoryMib(),
-                                    m.resources().cpuTimeS(), m.resources().device()), version,
-                    hash.content(), hash.reference(), hash.estimate(), job.source(), now.toString(), evaluation);
-            Path file = reportFile(m.runId(), version);
-            writer.accept(file, ReportJson.toJson(report));
-            view.append(new LedgerEntry(m.runId(), hash.content(), version, now.toEpochMilli(), job.source()));
-            return new Committed(new RunResult(Outcome.REPORTED, m.runId(), version, file, null, null), report);
-        });
+        }
+    }
+
+    /** @return the report of a run version as filed, {@code processed_at} = {@code now} */
+    private static PipelineReport report(RunJob job, ContentHash hash, int version, Instant now,
+            EvaluationReport evaluation) {
+        RunMetadata m = job.metadata();
+        return new PipelineReport(PipelineReport.SCHEMA, PipelineReport.SCHEMA_VERSION,
+                Version.TOOL, m.runId(), m.robotId(), m.sequence(), m.method(), m.seed(), m.labels().site(),
+                m.labels().softwareVersion(), m.labels().tags().isEmpty() ? null : m.labels().tags(),
+                m.about().domain(), m.about().simulator(), m.about().scenario(),
+                m.about().factors().isEmpty() ? null : m.about().factors(), m.about().environment(),
+                m.about().modality(), m.about().groundTruth(), m.resources() == null ? null
+                        : new PipelineReport.Resources(m.resources().wallTimeS(), m.resources().peakMemoryMib(),
+                                m.resources().cpuTimeS(), m.resources().device()), version,
+                hash.content(), hash.reference(), hash.estimate(), job.source(), now.toString(), evaluation);
     }
 }

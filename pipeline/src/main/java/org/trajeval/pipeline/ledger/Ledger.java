@@ -10,10 +10,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Function;
 
@@ -37,7 +37,9 @@ public final class Ledger implements AutoCloseable {
     private final Path file;
     private final FileChannel channel;
     private final ReentrantLock inProcess = new ReentrantLock();
-    private final Map<String, Known> byRun = new HashMap<>();
+    // written only under the in-process lock, after its line is in the file; read without it by the hints
+    // (probablyReported, probableLatestVersion: a worker asks while another one commits)
+    private final Map<String, Known> byRun = new ConcurrentHashMap<>();
     private long readPosition;
 
     private Ledger(Path file, FileChannel channel) {
@@ -71,7 +73,16 @@ public final class Ledger implements AutoCloseable {
         int latestVersion(String runId);
 
         /** Appends an entry and fsyncs the file. */
-        void append(LedgerEntry entry);
+        default void append(LedgerEntry entry) {
+            appendAll(List.of(entry));
+        }
+
+        /**
+         * Appends entries in order with one write and one fsync (a group commit): when it returns, every
+         * line is durable; when it throws, none counts in this process (a line cut short is cut off at the
+         * next open; complete lines written before the failure are read back by the next {@link #locked}).
+         */
+        void appendAll(List<LedgerEntry> entries);
     }
 
     /**
@@ -91,16 +102,19 @@ public final class Ledger implements AutoCloseable {
     }
 
     /**
+     * @return the highest version reported for the run id as far as this process has read, 0 when none
+     *     (no lock: a guess before writing a report; {@link #locked} decides)
+     */
+    public int probableLatestVersion(String runId) {
+        return view.latestVersion(runId);
+    }
+
+    /**
      * @return whether this run id and content were reported, as far as this process has read
      *     (no lock: a fast check before scoring; {@link #locked} decides)
      */
     public boolean probablyReported(String runId, String contentHash) {
-        inProcess.lock();
-        try {
-            return lookup(runId, contentHash).isPresent();
-        } finally {
-            inProcess.unlock();
-        }
+        return lookup(runId, contentHash).isPresent();
     }
 
     /** @return every entry read so far, in file order (read back from the file) */
@@ -150,10 +164,22 @@ public final class Ledger implements AutoCloseable {
         }
 
         @Override
-        public void append(LedgerEntry entry) {
+        public void appendAll(List<LedgerEntry> entries) {
+            if (entries.isEmpty()) {
+                return;
+            }
             try {
-                byte[] line = entry.toLine().getBytes(StandardCharsets.UTF_8);
-                ByteBuffer b = ByteBuffer.wrap(line);
+                byte[][] lines = new byte[entries.size()][];
+                int total = 0;
+                for (int i = 0; i < lines.length; i++) {
+                    lines[i] = entries.get(i).toLine().getBytes(StandardCharsets.UTF_8);
+                    total += lines[i].length;
+                }
+                ByteBuffer b = ByteBuffer.allocate(total);
+                for (byte[] line : lines) {
+                    b.put(line);
+                }
+                b.flip();
                 long start = channel.size();
                 long pos = start;
                 while (b.hasRemaining()) {
@@ -161,7 +187,11 @@ public final class Ledger implements AutoCloseable {
                 }
                 channel.force(false);
                 readPosition = pos;
-                index(entry, start, line.length - 1);
+                long offset = start;
+                for (int i = 0; i < lines.length; i++) {
+                    index(entries.get(i), offset, lines[i].length - 1);
+                    offset += lines[i].length;
+                }
             } catch (IOException e) {
                 throw new UncheckedIOException("could not append to the ledger " + file + ": " + e.getMessage(), e);
             }

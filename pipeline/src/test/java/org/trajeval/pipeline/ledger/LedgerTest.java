@@ -32,6 +32,30 @@ class LedgerTest {
     }
 
     @Test
+    void aGroupOfEntriesIsAppendedInOrderAndEachIsFoundAtOnceAndAfterARestart() throws IOException {
+        Path f = dir.resolve("ledger.log");
+        var group = java.util.List.of(new LedgerEntry("r1", "h1", 1, 10, "b1"), new LedgerEntry("r2", "h2", 1, 11, "b2"),
+                new LedgerEntry("r1", "h3", 2, 12, "b3"));
+        try (Ledger l = Ledger.open(f)) {
+            l.locked(v -> {
+                v.appendAll(group);
+                // indexed where each line lies: found by content, in this process, without a re-read
+                assertEquals("b3", v.find("r1", "h3").orElseThrow().source());
+                assertEquals("b2", v.find("r2", "h2").orElseThrow().source());
+                return null;
+            });
+            assertEquals(2, l.probableLatestVersion("r1"));
+            assertTrue(l.probablyReported("r1", "h1"));
+        }
+        // one line per entry, in the group's order
+        assertEquals(3, Files.readAllLines(f).size());
+        assertTrue(Files.readAllLines(f).get(2).startsWith("R\tr1\th3\t2\t"));
+        try (Ledger l = Ledger.open(f)) {
+            assertEquals(group, l.entries());
+        }
+    }
+
+    @Test
     void aLineCutShortByACrashIsIgnoredAndCutOff() throws IOException {
         Path f = dir.resolve("ledger.log");
         try (Ledger l = Ledger.open(f)) {
