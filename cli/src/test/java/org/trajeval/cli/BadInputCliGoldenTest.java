@@ -70,8 +70,8 @@ class BadInputCliGoldenTest {
         for (String a : Files.readAllLines(golden.resolve("args"), StandardCharsets.UTF_8)) {
             args.add(unescape(a.replace("{dir}", dir.toString())));
         }
-        EvalCommandTest.Run r = assertTimeoutPreemptively(Duration.ofSeconds(60),
-                () -> EvalCommandTest.run(args.toArray(new String[0])));
+        CliRun r = assertTimeoutPreemptively(Duration.ofSeconds(60),
+                () -> CliRun.of(args.toArray(new String[0])));
         String err = r.err().replace(dir.toString(), "{dir}");
         String out = r.out().replace(dir.toString(), "{dir}");
         if (!Files.exists(golden.resolve("stderr")) && Boolean.getBoolean("golden.record")) {

@@ -32,7 +32,7 @@ class BagCommandsTest {
 
     @Test
     void evalOfTwoTopicsOfOneBagGivesEvosApe() throws Exception {
-        EvalCommandTest.Run r = EvalCommandTest.run("eval", ros().resolve("nav2_turtlebot.mcap").toString(),
+        CliRun r = CliRun.of("eval", ros().resolve("nav2_turtlebot.mcap").toString(),
                 "--ref-topic", "/amcl_pose", "--est-topic", "/odom", "--align", "se3", "--json");
         assertEquals(0, r.code(), r.err());
         JsonNode rep = new ObjectMapper().readTree(r.out());
@@ -43,7 +43,7 @@ class BagCommandsTest {
     @Test
     void evalAcceptsBagColonTopicAndTfTrajectories() throws Exception {
         String bag = ros().resolve("nav2_turtlebot.mcap").toString();
-        EvalCommandTest.Run r = EvalCommandTest.run("eval", bag + ":/odom", bag + ":/tf:odom.base_link", "--json");
+        CliRun r = CliRun.of("eval", bag + ":/odom", bag + ":/tf:odom.base_link", "--json");
         assertEquals(0, r.code(), r.err());
         JsonNode rep = new ObjectMapper().readTree(r.out());
         // the TF edge odom->base_link is bit-identical to /odom (README of refdata/ros): APE exactly 0
@@ -54,7 +54,7 @@ class BagCommandsTest {
     @Test
     void bagWithoutTopicIsRefusedListingTheTopics() {
         String bag = ros().resolve("nav2_turtlebot.mcap").toString();
-        EvalCommandTest.Run r = EvalCommandTest.run("eval", bag, bag);
+        CliRun r = CliRun.of("eval", bag, bag);
         assertEquals(2, r.code());
         assertTrue(r.err().contains("this is a bag: name the topic") && r.err().contains("/amcl_pose"), r.err());
         assertEquals(1, r.err().strip().lines().count(), r.err());
@@ -62,7 +62,7 @@ class BagCommandsTest {
 
     @Test
     void unknownTopicExitsWith2AndListsTheTopics() {
-        EvalCommandTest.Run r = EvalCommandTest.run("eval", ros().resolve("ROS_example.bag").toString(),
+        CliRun r = CliRun.of("eval", ros().resolve("ROS_example.bag").toString(),
                 "--ref-topic", "groundtruth", "--est-topic", "ORB_SLAM");
         assertEquals(2, r.code());
         assertTrue(r.err().contains("no topic ORB_SLAM") && r.err().contains("ORB-SLAM"), r.err());
@@ -70,7 +70,7 @@ class BagCommandsTest {
 
     @Test
     void topicsListsTypesCountsAndTheTfTree() {
-        EvalCommandTest.Run r = EvalCommandTest.run("topics", ros().resolve("tf_example.bag").toString());
+        CliRun r = CliRun.of("topics", ros().resolve("tf_example.bag").toString());
         assertEquals(0, r.code(), r.err());
         assertTrue(r.out().contains("ROS 1 bag"), r.out());
         assertTrue(r.out().matches("(?s).*/tf\\s+tf2_msgs/TFMessage\\s+517\\s.*"), r.out());
@@ -82,12 +82,12 @@ class BagCommandsTest {
     void convertWritesATumFileThatReadsBackAsTheSameTrajectory() throws Exception {
         Path out = dir.resolve("odom.tum");
         String bag = ros().resolve("nav2_turtlebot.mcap").toString();
-        EvalCommandTest.Run r = EvalCommandTest.run("convert", bag, "--topic", "/odom", "--to", "tum", "--out",
+        CliRun r = CliRun.of("convert", bag, "--topic", "/odom", "--to", "tum", "--out",
                 out.toString());
         assertEquals(0, r.code(), r.err());
         List<String> lines = Files.readAllLines(out);
         assertEquals(1 + 2639, lines.size(), "header + one line per /odom message");
-        EvalCommandTest.Run back = EvalCommandTest.run("eval", bag + ":/odom", out.toString(), "--json");
+        CliRun back = CliRun.of("eval", bag + ":/odom", out.toString(), "--json");
         assertEquals(0, back.code(), back.err());
         assertEquals(0.0, new ObjectMapper().readTree(back.out()).at("/ate/trans_m/max").asDouble(), 0.0);
     }
@@ -95,7 +95,7 @@ class BagCommandsTest {
     @Test
     void convertToKittiWritesTwelveNumbersAPose() throws Exception {
         Path out = dir.resolve("gt.kitti");
-        EvalCommandTest.Run r = EvalCommandTest.run("convert", ros().resolve("ROS_example.bag") + ":groundtruth",
+        CliRun r = CliRun.of("convert", ros().resolve("ROS_example.bag") + ":groundtruth",
                 "--to", "kitti", "--out", out.toString());
         assertEquals(0, r.code(), r.err());
         List<String> lines = Files.readAllLines(out);

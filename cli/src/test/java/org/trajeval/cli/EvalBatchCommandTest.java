@@ -29,7 +29,7 @@ class EvalBatchCommandTest {
     @Test
     void everyPairScoredExitsZeroAndWritesReportsAndSummary() throws IOException {
         Path table = pairs("name,ref,est,alignment\na,gt.csv,est.csv,none\nb,gt.csv,gt.csv,none\n");
-        EvalCommandTest.Run r = EvalCommandTest.run("eval", "--batch", table.toString(), "--reports",
+        CliRun r = CliRun.of("eval", "--batch", table.toString(), "--reports",
                 dir.resolve("out").toString(), "--threads", "2");
         assertEquals(0, r.code(), r.err());
         assertTrue(r.out().startsWith("scored 2 of 2 pairs"), r.out());
@@ -41,7 +41,7 @@ class EvalBatchCommandTest {
     @Test
     void aBadPairIsAFailedRowExitFourAndTheOthersAreStillScored() throws IOException {
         Path table = pairs("ref,est\ngt.csv,nowhere.csv\ngt.csv,est.csv\n");
-        EvalCommandTest.Run r = EvalCommandTest.run("eval", "--batch", table.toString(), "--reports",
+        CliRun r = CliRun.of("eval", "--batch", table.toString(), "--reports",
                 dir.resolve("out").toString());
         assertEquals(ExitCodes.SOME_FAILED, r.code(), r.err());
         assertEquals(1, r.err().lines().count(), r.err());
@@ -52,12 +52,12 @@ class EvalBatchCommandTest {
     @Test
     void aBadTableOrMissingReportsFolderIsExitTwoAndNothingIsScored() throws IOException {
         Path table = pairs("reference,est\ngt.csv,est.csv\n");
-        EvalCommandTest.Run noRef = EvalCommandTest.run("eval", "--batch", table.toString(), "--reports",
+        CliRun noRef = CliRun.of("eval", "--batch", table.toString(), "--reports",
                 dir.resolve("out").toString());
         assertEquals(2, noRef.code());
         assertTrue(noRef.err().contains("the header must name the columns 'ref' and 'est'"), noRef.err());
-        assertEquals(2, EvalCommandTest.run("eval", "--batch", table.toString()).code());
-        assertEquals(2, EvalCommandTest.run("eval", "gt.csv", "--batch", table.toString(), "--reports",
+        assertEquals(2, CliRun.of("eval", "--batch", table.toString()).code());
+        assertEquals(2, CliRun.of("eval", "gt.csv", "--batch", table.toString(), "--reports",
                 dir.resolve("out").toString()).code());
         assertTrue(!Files.exists(dir.resolve("out")));
     }

@@ -5,8 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -16,25 +14,11 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.trajeval.core.report.EvaluationReport;
 import org.trajeval.core.report.ReportJson;
-import picocli.CommandLine;
 
 /** The eval command as a user runs it: options, output forms, exit codes, error lines. */
 class EvalCommandTest {
     @TempDir
     Path dir;
-
-    record Run(int code, String out, String err) {
-    }
-
-    static Run run(String... args) {
-        StringWriter out = new StringWriter();
-        StringWriter err = new StringWriter();
-        CommandLine cl = TrajevalCommand.newCommandLine();
-        cl.setOut(new PrintWriter(out));
-        cl.setErr(new PrintWriter(err));
-        int code = cl.execute(args);
-        return new Run(code, out.toString(), err.toString());
-    }
 
     private Path csv(String name, String body) throws IOException {
         Path p = dir.resolve(name);
@@ -57,7 +41,7 @@ class EvalCommandTest {
     @Test
     void jsonReportCarriesTheDocumentedKeysAndUnits() throws IOException {
         Path[] p = offsetPair();
-        Run r = run("eval", p[0].toString(), p[1].toString(), "--align", "none", "--json");
+        CliRun r = CliRun.of("eval", p[0].toString(), p[1].toString(), "--align", "none", "--json");
         assertEquals(0, r.code(), r.err());
         EvaluationReport rep = ReportJson.parseEvaluation(r.out());
         // 0.1 m to the left everywhere: ATE = 0.1 m by hand
@@ -76,7 +60,7 @@ class EvalCommandTest {
     void outWritesTheJsonFileAndStillPrintsTheTable() throws IOException {
         Path[] p = offsetPair();
         Path out = dir.resolve("reports/r.json");
-        Run r = run("eval", p[0].toString(), p[1].toString(), "--out", out.toString());
+        CliRun r = CliRun.of("eval", p[0].toString(), p[1].toString(), "--out", out.toString());
         assertEquals(0, r.code(), r.err());
         assertTrue(r.out().contains("ATE trans (m)"));
         EvaluationReport rep = ReportJson.parseEvaluation(Files.readString(out));
@@ -90,7 +74,7 @@ class EvalCommandTest {
     void badInputGivesExitCode2AndOneLineWithoutStackTrace() throws IOException {
         Path[] p = offsetPair();
         Path gt = csv("bad.csv", "t,x,y,yaw\n0,0,0,0\n1,1,0,nan\n");
-        Run r = run("eval", gt.toString(), p[1].toString());
+        CliRun r = CliRun.of("eval", gt.toString(), p[1].toString());
         assertEquals(2, r.code());
         assertEquals(1, r.err().strip().lines().count(), r.err());
         assertTrue(r.err().startsWith("trajeval: " + gt + ":3:"), r.err());
@@ -100,21 +84,21 @@ class EvalCommandTest {
     @Test
     void unknownOptionValueIsAUsageErrorWithExitCode2() throws IOException {
         Path[] p = offsetPair();
-        Run r = run("eval", p[0].toString(), p[1].toString(), "--align", "se4");
+        CliRun r = CliRun.of("eval", p[0].toString(), p[1].toString(), "--align", "se4");
         assertEquals(2, r.code());
         assertTrue(r.err().contains("se4"), r.err());
     }
 
     @Test
     void missingFileIsRefusedWithExitCode2() {
-        Run r = run("eval", dir.resolve("nope.csv").toString(), dir.resolve("nope2.csv").toString());
+        CliRun r = CliRun.of("eval", dir.resolve("nope.csv").toString(), dir.resolve("nope2.csv").toString());
         assertEquals(2, r.code());
         assertTrue(r.err().contains("nope"), r.err());
     }
 
     @Test
     void versionPrintsTheToolVersion() {
-        Run r = run("--version");
+        CliRun r = CliRun.of("--version");
         assertEquals(0, r.code());
         assertTrue(r.out().startsWith("trajeval "), r.out());
     }
@@ -146,7 +130,7 @@ class EvalCommandTest {
             }
         }
         Assumptions.assumeTrue(expected != null, "record not found");
-        Run r = run("eval", refdata.resolve("freiburg1_xyz-groundtruth.txt").toString(),
+        CliRun r = CliRun.of("eval", refdata.resolve("freiburg1_xyz-groundtruth.txt").toString(),
                 refdata.resolve("freiburg1_xyz-rgbdslam.txt").toString(), "--convention", "evo", "--align", "se3",
                 "--json");
         assertEquals(0, r.code(), r.err());

@@ -12,7 +12,6 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.trajeval.cli.EvalCommandTest.Run;
 import org.trajeval.store.ResultsStore;
 import org.trajeval.store.RunRecord;
 import org.trajeval.store.Selection;
@@ -52,10 +51,10 @@ class EvalDbTest {
         String[] args = {"eval", p[0].toString(), p[1].toString(), "--align", "none", "--db", db.toString(), "--tag",
             "software_version=2.4", "--tag", "route=hall", "--tag", "method=orb", "--tag", "seed=3", "--tag",
             "robot=bot-1", "--tag", "site=hamburg", "--tag", "shift=night"};
-        Run first = EvalCommandTest.run(args);
+        CliRun first = CliRun.of(args);
         assertEquals(0, first.code(), first.err());
         assertTrue(first.err().contains("recorded the result in"), first.err());
-        Run again = EvalCommandTest.run(args);
+        CliRun again = CliRun.of(args);
         assertEquals(0, again.code(), again.err());
         assertTrue(again.err().contains("the result was already in"), again.err());
         List<RunRecord> rows = stored(db);
@@ -77,15 +76,15 @@ class EvalDbTest {
         Path[] p = pair();
         Path db = dir.resolve("fleet.db");
         Path out = dir.resolve("reports/r.json");
-        Run r = EvalCommandTest.run("eval", p[0].toString(), p[1].toString(), "--out", out.toString(), "--db",
+        CliRun r = CliRun.of("eval", p[0].toString(), p[1].toString(), "--out", out.toString(), "--db",
                 db.toString(), "--tag", "software_version=2.4");
         assertEquals(0, r.code(), r.err());
-        Run imp = EvalCommandTest.run("db", "import", out.getParent().toString(), "--db", db.toString(), "--tag",
+        CliRun imp = CliRun.of("db", "import", out.getParent().toString(), "--db", db.toString(), "--tag",
                 "software_version=2.4");
         assertEquals(0, imp.code(), imp.err());
         assertTrue(imp.out().contains("1 result(s), 0 new"), imp.out());
         // other labels are another result
-        Run other = EvalCommandTest.run("db", "import", out.toString(), "--db", db.toString(), "--tag",
+        CliRun other = CliRun.of("db", "import", out.toString(), "--db", db.toString(), "--tag",
                 "software_version=2.5");
         assertTrue(other.out().contains("1 result(s), 1 new"), other.out());
         assertEquals(2, stored(db).size());
@@ -94,11 +93,11 @@ class EvalDbTest {
     @Test
     void aTagWithoutDbOrASeedThatIsNoNumberIsRefusedBeforeEvaluating() throws IOException {
         Path[] p = pair();
-        Run noDb = EvalCommandTest.run("eval", p[0].toString(), p[1].toString(), "--tag", "route=hall");
+        CliRun noDb = CliRun.of("eval", p[0].toString(), p[1].toString(), "--tag", "route=hall");
         assertEquals(ExitCodes.BAD_INPUT, noDb.code());
         assertTrue(noDb.err().contains("--tag labels the stored result: it needs --db"), noDb.err());
         Path db = dir.resolve("fleet.db");
-        Run seed = EvalCommandTest.run("eval", p[0].toString(), p[1].toString(), "--db", db.toString(), "--tag",
+        CliRun seed = CliRun.of("eval", p[0].toString(), p[1].toString(), "--db", db.toString(), "--tag",
                 "seed=three");
         assertEquals(ExitCodes.BAD_INPUT, seed.code());
         assertEquals("trajeval: seed: expected an integer, found \"three\"", seed.err().strip());

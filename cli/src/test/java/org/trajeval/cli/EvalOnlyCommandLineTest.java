@@ -22,18 +22,18 @@ class EvalOnlyCommandLineTest {
     @TempDir
     Path dir;
 
-    private static EvalCommandTest.Run run(CommandLine cl, String... args) {
+    private static CliRun run(CommandLine cl, String... args) {
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();
         cl.setOut(new PrintWriter(out));
         cl.setErr(new PrintWriter(err));
         int code = cl.execute(args);
-        return new EvalCommandTest.Run(code, out.toString(), err.toString());
+        return new CliRun(code, out.toString(), err.toString());
     }
 
     private void assertSameAsWholeCommand(String... args) {
-        EvalCommandTest.Run whole = run(TrajevalCommand.newCommandLine(), args);
-        EvalCommandTest.Run evalOnly = run(TrajevalCommand.newCommandLine(args), args);
+        CliRun whole = run(TrajevalCommand.newCommandLine(), args);
+        CliRun evalOnly = run(TrajevalCommand.newCommandLine(args), args);
         assertEquals(whole, evalOnly, String.join(" ", args));
     }
 

@@ -4,8 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import javax.xml.parsers.DocumentBuilderFactory;
@@ -14,7 +12,6 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.trajeval.core.protocol.DemoBenchmark;
 import org.w3c.dom.Document;
-import picocli.CommandLine;
 
 /**
  * The gate and the store on the demo suite: alpha replaced by beta must fail, the demo on new data
@@ -28,22 +25,9 @@ class GateCommandTest {
     private static Path replaced;
     private static Path db;
 
-    record Run(int code, String out, String err) {
-    }
-
-    static Run run(String... args) {
-        StringWriter out = new StringWriter();
-        StringWriter err = new StringWriter();
-        CommandLine cl = TrajevalCommand.newCommandLine();
-        cl.setOut(new PrintWriter(out));
-        cl.setErr(new PrintWriter(err));
-        int code = cl.execute(args);
-        return new Run(code, out.toString(), err.toString());
-    }
-
     private static Path suite(Path manifest, String name, String version) {
         Path out = dir.resolve(name);
-        Run r = run("suite", manifest.toString(), "--out", out.toString(), "--allow-leakage", "--threads", "2",
+        CliRun r = CliRun.of("suite", manifest.toString(), "--out", out.toString(), "--allow-leakage", "--threads", "2",
                 "--resamples", "1000", "--db", db.toString(), "--tag", "software_version=" + version);
         assertEquals(0, r.code(), r.err());
         return out.resolve("report.json");
@@ -68,7 +52,7 @@ class GateCommandTest {
     void alphaReplacedByBetaFailsTheGateWithExitFive() throws Exception {
         Path md = dir.resolve("gate.md");
         Path junit = dir.resolve("gate.xml");
-        Run r = run("gate", base.toString(), replaced.getParent().toString(), "--markdown", md.toString(), "--junit",
+        CliRun r = CliRun.of("gate", base.toString(), replaced.getParent().toString(), "--markdown", md.toString(), "--junit",
                 junit.toString());
         assertEquals(ExitCodes.REGRESSION, r.code(), r.out() + r.err());
         assertTrue(r.out().lines().anyMatch(l -> l.startsWith("alpha") && l.contains("ate_trans_rmse_m")
@@ -84,17 +68,17 @@ class GateCommandTest {
 
     @Test
     void theDemoOnNewDataWithMethodsOfTheSameQualityPasses() {
-        Run r = run("gate", base.toString(), rerun.toString());
+        CliRun r = CliRun.of("gate", base.toString(), rerun.toString());
         assertEquals(ExitCodes.OK, r.code(), r.out() + r.err());
         assertTrue(r.out().contains("gate: PASS"), r.out());
     }
 
     @Test
     void theStoreGivesTheSameVerdictsBySoftwareVersion() {
-        Run fail = run("gate", "--db", db.toString(), "--baseline", "software_version=2.3", "--candidate",
+        CliRun fail = CliRun.of("gate", "--db", db.toString(), "--baseline", "software_version=2.3", "--candidate",
                 "version=2.4");
         assertEquals(ExitCodes.REGRESSION, fail.code(), fail.out() + fail.err());
-        Run pass = run("gate", "--db", db.toString(), "--baseline", "software_version=2.3", "--candidate",
+        CliRun pass = CliRun.of("gate", "--db", db.toString(), "--baseline", "software_version=2.3", "--candidate",
                 "version=2.4-rerun");
         assertEquals(ExitCodes.OK, pass.code(), pass.out() + pass.err());
     }
@@ -102,7 +86,7 @@ class GateCommandTest {
     @Test
     void trendByVersionFlagsAlphaWhoseLatestVersionRanBetasEstimates() throws IOException {
         Path page = dir.resolve("trend.html");
-        Run r = run("trend", "--db", db.toString(), "--metric", "ate_trans_rmse_m", "--by", "method", "--bucket",
+        CliRun r = CliRun.of("trend", "--db", db.toString(), "--metric", "ate_trans_rmse_m", "--by", "method", "--bucket",
                 "version", "--html", page.toString());
         assertEquals(0, r.code(), r.err());
         assertTrue(r.out().lines().anyMatch(l -> l.startsWith("alpha") && l.contains("latest") && l.endsWith("WORSE")),
@@ -114,7 +98,7 @@ class GateCommandTest {
 
     @Test
     void importingTheReportsAgainChangesNothing() {
-        Run r = run("db", "import", dir.resolve("base").toString(), "--db", db.toString(), "--tag",
+        CliRun r = CliRun.of("db", "import", dir.resolve("base").toString(), "--db", db.toString(), "--tag",
                 "software_version=2.3");
         assertEquals(0, r.code(), r.err());
         assertTrue(r.out().contains("120 result(s), 0 new"), r.out());
@@ -122,7 +106,7 @@ class GateCommandTest {
 
     @Test
     void anUnknownMetricIsRefusedWithOneLine() {
-        Run r = run("gate", base.toString(), rerun.toString(), "--max-regression", "ate_rmse=5");
+        CliRun r = CliRun.of("gate", base.toString(), rerun.toString(), "--max-regression", "ate_rmse=5");
         assertEquals(ExitCodes.BAD_INPUT, r.code());
         assertEquals(1, r.err().strip().lines().count(), r.err());
         assertTrue(r.err().contains("--max-regression: expected METRIC=PCT"), r.err());
@@ -130,7 +114,7 @@ class GateCommandTest {
 
     @Test
     void aPasswordInTheUrlIsRefused() {
-        Run r = run("db", "info", "--db", "jdbc:postgresql://127.0.0.1:1/x?user=u&password=hunter2");
+        CliRun r = CliRun.of("db", "info", "--db", "jdbc:postgresql://127.0.0.1:1/x?user=u&password=hunter2");
         assertEquals(ExitCodes.BAD_INPUT, r.code());
         assertTrue(r.err().contains("the URL holds a password"), r.err());
         assertTrue(!r.err().contains("hunter2"), r.err());

@@ -38,7 +38,7 @@ class PlotAndResOnRealDataTest {
         assertTrue(Files.isRegularFile(refdata.resolve("evo_results/orb_ape.zip")),
                 "../shared/refdata/evo_results is missing: " + refdata.toAbsolutePath());
         // evo's archives: APE with SE(3) Umeyama alignment; RPE over 10 m, consecutive pairs (info.json titles)
-        SuiteCommandsTest.Run r = SuiteCommandsTest.run("eval", refdata.resolve("KITTI_00_gt.txt").toString(),
+        CliRun r = CliRun.of("eval", refdata.resolve("KITTI_00_gt.txt").toString(),
                 refdata.resolve("KITTI_00_ORB.txt").toString(), "--convention", "evo", "--align", "se3",
                 "--rpe-delta", "10", "--rpe-unit", "m", "--drift", "--save-series", dir.resolve("orb").toString(),
                 "--plot", dir.resolve("orb-plots").toString());
@@ -68,7 +68,7 @@ class PlotAndResOnRealDataTest {
                 s.series().segments().lengths(), 1e-9);
         assertTrue(Files.isRegularFile(dir.resolve("orb-plots/subtraj_trans.svg")));
         assertTrue(Files.isRegularFile(dir.resolve("orb-plots/subtraj_rot.png")));
-        SuiteCommandsTest.Run r = SuiteCommandsTest.run("res", "orb=" + dir.resolve("orb"),
+        CliRun r = CliRun.of("res", "orb=" + dir.resolve("orb"),
                 "evo=" + refdata.resolve("evo_results/orb_ape.zip"), "--plot", dir.resolve("res-sub").toString());
         assertEquals(0, r.code(), r.err());
         assertTrue(Files.isRegularFile(dir.resolve("res-sub/subtraj_trans.svg")));
@@ -76,7 +76,7 @@ class PlotAndResOnRealDataTest {
 
     @Test
     void givenSubTrajectoryLengthsAreTheOnesSaved() {
-        SuiteCommandsTest.Run r = SuiteCommandsTest.run("eval", refdata.resolve("KITTI_00_gt.txt").toString(),
+        CliRun r = CliRun.of("eval", refdata.resolve("KITTI_00_gt.txt").toString(),
                 refdata.resolve("KITTI_00_SPTAM.txt").toString(), "--align", "se3", "--subtraj-lengths", "100,400",
                 "--save-series", dir.resolve("sptam-lengths").toString());
         assertEquals(0, r.code(), r.err());
@@ -87,7 +87,7 @@ class PlotAndResOnRealDataTest {
     @Test
     void plotFormatPdfWritesAVectorPagePerFigureInsteadOfPng() throws Exception {
         Path out = dir.resolve("pdf-plots");
-        SuiteCommandsTest.Run r = SuiteCommandsTest.run("eval", refdata.resolve("KITTI_00_gt.txt").toString(),
+        CliRun r = CliRun.of("eval", refdata.resolve("KITTI_00_gt.txt").toString(),
                 refdata.resolve("KITTI_00_ORB.txt").toString(), "--align", "se3", "--plot", out.toString(),
                 "--plot-format", "pdf,svg");
         assertEquals(0, r.code(), r.err());
@@ -97,7 +97,7 @@ class PlotAndResOnRealDataTest {
         assertTrue(Files.isRegularFile(out.resolve("ate_trans.svg")));
         assertTrue(!Files.exists(out.resolve("ate_trans.png")));
         assertTrue(Files.readString(out.resolve("index.html")).contains("<a href=\"ate_trans.pdf\">PDF</a>"));
-        SuiteCommandsTest.Run bad = SuiteCommandsTest.run("eval", refdata.resolve("KITTI_00_gt.txt").toString(),
+        CliRun bad = CliRun.of("eval", refdata.resolve("KITTI_00_gt.txt").toString(),
                 refdata.resolve("KITTI_00_ORB.txt").toString(), "--plot", out.toString(), "--plot-format", "eps");
         assertEquals(ExitCodes.BAD_INPUT, bad.code(), bad.err());
         assertTrue(bad.err().contains("expected a comma list of svg, png and pdf, found \"eps\""), bad.err());
@@ -129,7 +129,7 @@ class PlotAndResOnRealDataTest {
 
     @Test
     void resTablesPutEvoAndTrajevalSideBySide() throws Exception {
-        SuiteCommandsTest.Run r = SuiteCommandsTest.run("res", "evo=" + refdata.resolve("evo_results/orb_ape.zip"),
+        CliRun r = CliRun.of("res", "evo=" + refdata.resolve("evo_results/orb_ape.zip"),
                 "trajeval=" + dir.resolve("orb"), "--plot", dir.resolve("res").toString());
         assertEquals(0, r.code(), r.err());
         List<String> ate = r.out().lines().filter(l -> l.matches("(evo|trajeval) .*")).limit(2).toList();
@@ -138,17 +138,17 @@ class PlotAndResOnRealDataTest {
         assertEquals(ate.get(0).replaceFirst("^evo\\s+evo\\s+", ""),
                 ate.get(1).replaceFirst("^trajeval\\s+trajeval\\s+", ""));
         assertTrue(Files.isRegularFile(dir.resolve("res/res_ate_trans_box.svg")));
-        String md = SuiteCommandsTest.run("res", dir.resolve("orb").toString(), "--format", "markdown").out();
+        String md = CliRun.of("res", dir.resolve("orb").toString(), "--format", "markdown").out();
         assertTrue(md.contains("| orb | trajeval | 1.30345 |"), md);
-        String tex = SuiteCommandsTest.run("res", "my_run=" + dir.resolve("orb"), "--format", "latex").out();
+        String tex = CliRun.of("res", "my_run=" + dir.resolve("orb"), "--format", "latex").out();
         assertTrue(tex.contains("my\\_run & trajeval & 1.30345"), tex);
-        String csv = SuiteCommandsTest.run("res", dir.resolve("orb").toString(), "--format", "csv").out();
+        String csv = CliRun.of("res", dir.resolve("orb").toString(), "--format", "csv").out();
         assertTrue(csv.startsWith("name,origin,source,metric,rmse,mean,median,std,min,max,n\n"), csv);
     }
 
     @Test
     void seedsOfOneNameGetTheirSpread() {
-        SuiteCommandsTest.Run r = SuiteCommandsTest.run("res", "orb=" + dir.resolve("orb"),
+        CliRun r = CliRun.of("res", "orb=" + dir.resolve("orb"),
                 "orb=" + refdata.resolve("evo_results/orb_ape.zip"));
         assertTrue(r.out().contains("RMSE over the results of one name (seeds)"), r.out());
         assertTrue(r.out().lines().anyMatch(l -> l.matches("orb\\s+2\\s+1\\.30345 .*")), r.out());
@@ -158,13 +158,13 @@ class PlotAndResOnRealDataTest {
     void aFileThatIsNoResultIsRefusedInOneLine() throws Exception {
         Path bad = dir.resolve("notes.txt");
         Files.writeString(bad, "hello\n");
-        SuiteCommandsTest.Run r = SuiteCommandsTest.run("res", bad.toString());
+        CliRun r = CliRun.of("res", bad.toString());
         assertEquals(ExitCodes.BAD_INPUT, r.code());
         assertEquals(1, r.err().strip().lines().count(), r.err());
         assertTrue(r.err().contains("notes.txt: a --save-series folder, an eval --out .json or an evo"), r.err());
         Path zip = dir.resolve("fake.zip");
         Files.writeString(zip, "not a zip");
-        SuiteCommandsTest.Run z = SuiteCommandsTest.run("res", zip.toString());
+        CliRun z = CliRun.of("res", zip.toString());
         assertEquals(ExitCodes.BAD_INPUT, z.code());
         assertTrue(z.err().contains("fake.zip: not a zip archive or empty"), z.err());
     }
@@ -173,7 +173,7 @@ class PlotAndResOnRealDataTest {
     void compareOnEvaluationReportsPointsToResInsteadOfLeakingAParserMessage() throws Exception {
         Path json = dir.resolve("orb.json");
         Files.copy(dir.resolve("orb/report.json"), json);
-        SuiteCommandsTest.Run r = SuiteCommandsTest.run("compare", json.toString(), json.toString());
+        CliRun r = CliRun.of("compare", json.toString(), json.toString());
         assertEquals(ExitCodes.BAD_INPUT, r.code());
         assertTrue(r.err().contains("orb.json: an evaluation report (trajeval eval --out), not a suite report; "
                 + "trajeval res compares evaluation results"), r.err());

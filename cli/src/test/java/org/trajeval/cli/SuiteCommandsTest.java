@@ -6,15 +6,12 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.IOException;
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.trajeval.core.protocol.DemoBenchmark;
-import picocli.CommandLine;
 
 /** suite, compare and splits check as a user runs them: output, exit codes, error lines. */
 class SuiteCommandsTest {
@@ -23,23 +20,10 @@ class SuiteCommandsTest {
     private static Path manifest;
     private static Path report;
 
-    record Run(int code, String out, String err) {
-    }
-
-    static Run run(String... args) {
-        StringWriter out = new StringWriter();
-        StringWriter err = new StringWriter();
-        CommandLine cl = TrajevalCommand.newCommandLine();
-        cl.setOut(new PrintWriter(out));
-        cl.setErr(new PrintWriter(err));
-        int code = cl.execute(args);
-        return new Run(code, out.toString(), err.toString());
-    }
-
     @BeforeAll
     static void suite() {
         manifest = DemoBenchmark.write(dir.resolve("bench"), 7);
-        Run r = run("suite", manifest.toString(), "--out", dir.resolve("out").toString(), "--allow-leakage",
+        CliRun r = CliRun.of("suite", manifest.toString(), "--out", dir.resolve("out").toString(), "--allow-leakage",
                 "--threads", "2", "--resamples", "1000");
         assertEquals(0, r.code(), r.err());
         report = dir.resolve("out/report.json");
@@ -66,7 +50,7 @@ class SuiteCommandsTest {
 
     @Test
     void suiteRefusesLeakageWithExitCodeThree() {
-        Run r = run("suite", manifest.toString(), "--out", dir.resolve("refused").toString());
+        CliRun r = CliRun.of("suite", manifest.toString(), "--out", dir.resolve("refused").toString());
         assertEquals(ExitCodes.LEAKAGE, r.code());
         assertTrue(r.err().contains("session s02: val {seq03}, test {seq11}"), r.err());
         assertTrue(!Files.exists(dir.resolve("refused/report.json")));
@@ -76,7 +60,7 @@ class SuiteCommandsTest {
     void badManifestGivesOneLineWithTheKeyPath() throws IOException {
         Path bad = dir.resolve("bench/bad.yaml");
         Files.writeString(bad, Files.readString(manifest).replace("name: trajeval-demo", "name: trajeval-demo\ncolour: red"));
-        Run r = run("suite", bad.toString(), "--out", dir.resolve("bad").toString());
+        CliRun r = CliRun.of("suite", bad.toString(), "--out", dir.resolve("bad").toString());
         assertEquals(ExitCodes.BAD_INPUT, r.code());
         assertEquals(1, r.err().strip().lines().count(), r.err());
         assertTrue(r.err().contains("'colour': unknown key"), r.err());
@@ -91,7 +75,7 @@ class SuiteCommandsTest {
         Path edited = dir.resolve("bench/collide.yaml");
         Files.writeString(edited, Files.readString(manifest).replace("reference: data/seq01/reference.csv",
                 "reference: collide/runs.csv"));
-        Run r = run("suite", edited.toString(), "--out", collide.toString(), "--allow-leakage");
+        CliRun r = CliRun.of("suite", edited.toString(), "--out", collide.toString(), "--allow-leakage");
         assertEquals(ExitCodes.BAD_INPUT, r.code(), r.err());
         assertEquals(1, r.err().strip().lines().count(), r.err());
         assertTrue(r.err().contains("runs.csv: --out would overwrite the input"), r.err());
@@ -101,7 +85,7 @@ class SuiteCommandsTest {
 
     @Test
     void compareTwoMethodsOfOneReport() throws IOException {
-        Run r = run("compare", report.toString(), "-a", "alpha", "-b", "gamma", "--json");
+        CliRun r = CliRun.of("compare", report.toString(), "-a", "alpha", "-b", "gamma", "--json");
         assertEquals(0, r.code(), r.err());
         JsonNode cs = new ObjectMapper().readTree(r.out());
         assertEquals(3, cs.size()); // two score metrics and the score
@@ -112,20 +96,20 @@ class SuiteCommandsTest {
         assertEquals("wilcoxon_exact", cs.get(0).get("test").asText());
         assertEquals(1, cs.get(0).get("holm").get("m").asInt()); // compare: a family of one test per metric
         assertEquals("exact", cs.get(0).get("hodges_lehmann").get("method").asText());
-        Run table = run("compare", report.toString(), "-a", "alpha", "-b", "gamma", "--detect",
+        CliRun table = CliRun.of("compare", report.toString(), "-a", "alpha", "-b", "gamma", "--detect",
                 "ate_trans_rmse_m=0.05");
         // one test label per row, not one line for all
         assertEquals(3, table.out().lines().filter(l -> l.startsWith("alpha") && l.endsWith("Wilcoxon exact")).count(),
                 table.out());
         assertTrue(table.out().contains("on ate_trans_rmse_m: detecting a mean difference of 0.05 needs"), table.out());
-        Run unknown = run("compare", report.toString(), "-a", "alpha", "-b", "gamma", "--detect", "speed=1");
+        CliRun unknown = CliRun.of("compare", report.toString(), "-a", "alpha", "-b", "gamma", "--detect", "speed=1");
         assertEquals(ExitCodes.BAD_INPUT, unknown.code());
         assertTrue(unknown.err().contains("--detect: the reports have no compared metric 'speed'"), unknown.err());
     }
 
     @Test
     void compareTwoReportsPairsTheSameMethodByLabel() {
-        Run r = run("compare", report.toString(), report.toString(), "-a", "beta", "-b", "beta", "--json");
+        CliRun r = CliRun.of("compare", report.toString(), report.toString(), "-a", "beta", "-b", "beta", "--json");
         assertEquals(0, r.code(), r.err());
         assertTrue(r.out().contains("\"method_a\" : \"beta@A\""), r.out());
         assertTrue(r.out().contains("\"mean_difference\" : 0.0"), r.out()); // a report against itself
@@ -133,14 +117,14 @@ class SuiteCommandsTest {
 
     @Test
     void compareRefusesAnUnknownMethod() {
-        Run r = run("compare", report.toString(), "-a", "alpha", "-b", "delta");
+        CliRun r = CliRun.of("compare", report.toString(), "-a", "alpha", "-b", "delta");
         assertEquals(ExitCodes.BAD_INPUT, r.code());
         assertTrue(r.err().contains("no method 'delta'"), r.err());
     }
 
     @Test
     void splitsCheckFindsTheLeakAndExitsWithThree() {
-        Run r = run("splits", "check", manifest.resolveSibling("splits.csv").toString());
+        CliRun r = CliRun.of("splits", "check", manifest.resolveSibling("splits.csv").toString());
         assertEquals(ExitCodes.LEAKAGE, r.code(), r.err());
         assertTrue(r.out().contains("session s02: val {seq03}, test {seq11}"), r.out());
     }
@@ -150,7 +134,7 @@ class SuiteCommandsTest {
         // the lesson's make_demo_data table: S02 is in train and in test
         Path t = dir.resolve("lesson_splits.csv");
         Files.writeString(t, "sequence_id,split\nS01,train\nS02,train\nS03,val\nS02,test\nS04,test\n");
-        Run r = run("splits", "check", t.toString());
+        CliRun r = CliRun.of("splits", "check", t.toString());
         assertEquals(ExitCodes.LEAKAGE, r.code());
         assertTrue(r.out().contains("session S02: train {S02}, test {S02}"), r.out());
         assertTrue(r.out().contains("sequence S02: train {S02}, test {S02}"), r.out());
@@ -160,7 +144,7 @@ class SuiteCommandsTest {
     void splitsCheckOfACleanTableExitsWithZero() throws IOException {
         Path t = dir.resolve("clean.csv");
         Files.writeString(t, "sequence_id,session_id,split\na,s1,train\nb,s1,train\nc,s2,test\n");
-        Run r = run("splits", "check", t.toString());
+        CliRun r = CliRun.of("splits", "check", t.toString());
         assertEquals(0, r.code(), r.err());
         assertTrue(r.out().startsWith("no leakage: 3 rows, 2 sessions"), r.out());
     }
@@ -169,7 +153,7 @@ class SuiteCommandsTest {
     void splitsCheckOfABadTableNamesTheLine() throws IOException {
         Path t = dir.resolve("bad.csv");
         Files.writeString(t, "sequence_id,split\na,train\nb,holdout\n");
-        Run r = run("splits", "check", t.toString());
+        CliRun r = CliRun.of("splits", "check", t.toString());
         assertEquals(ExitCodes.BAD_INPUT, r.code());
         assertTrue(r.err().contains(t + ":3: column 'split' must be train, val or test, found \"holdout\""), r.err());
     }
