@@ -6,7 +6,7 @@ Every command runs under `nice -n 10` and /usr/bin/time (wall, user + sys CPU, p
 the minimum is reported (the machine is shared: the minimum is the least disturbed run), with the
 1-minute load average read before each run. B/pose above the baseline = (peak RSS - peak RSS of the
 same command on the 1000-pose pair) / poses.  --before DIR adds the same rows for another launcher
-(A/B on the same files).  Called by bench/speed-3d.sh.
+(A/B on the same files, the two builds alternated run by run: after, before, before, after, ...).  Called by bench/speed-3d.sh.
 """
 import argparse
 import os
@@ -110,9 +110,16 @@ def main():
         for kind in ("planar", "spatial"):
             gen(a.python, a.data, n, kind)
         evo_row_cpu = None
-        for tag, t in tools:
-            for name, cmd in cases(t, a.data, n):
-                runs = [timed(cmd) for _ in range(a.runs)]
+        names = [name for name, _ in cases(tools[0][1], a.data, n)]
+        for idx, name in enumerate(names):
+            # builds alternated run by run (after, before, before, after, ...), so that neither build
+            # always runs first: in a VM the first of two back-to-back big runs pays more page-fault time
+            timings = {tag: [] for tag, _ in tools}
+            for k in range(a.runs):
+                for tag, t in (tools if k % 2 == 0 else tools[::-1]):
+                    timings[tag].append(timed(cases(t, a.data, n)[idx][1]))
+            for tag, t in tools:
+                runs = timings[tag]
                 best = min(runs, key=lambda r: r[1])
                 row = {"poses": n, "build": tag, "case": name, "wall_min_s": min(r[0] for r in runs),
                        "cpu_min_s": best[1], "rss_min_mib": min(r[2] for r in runs) / 2**20,
