@@ -36,25 +36,9 @@ public final class ParseSpeed {
             } else {
                 try (ByteLines bl = ByteLines.open(bytes, "x", Long.MAX_VALUE)) {
                     if (mode.equals("parse")) {
-                        NumericRows r = new NumericRows(bl, "x", tum ? NumericRows.WHITESPACE : (byte) ',', !tum);
-                        if (!tum) {
-                            r.nextContentLine();
-                        }
-                        int[] select = new int[fields];
-                        String[] names = new String[fields];
-                        String[] units = new String[fields];
-                        for (int k = 0; k < fields; k++) {
-                            select[k] = k;
-                            names[k] = "c" + k;
-                            units[k] = "";
-                        }
-                        r.select(select, names, units);
-                        r.requireFields(fields, "test");
-                        double[] row = new double[fields];
-                        while (r.next(row)) {
-                            sum += row[1] + row[fields - 1];
-                            lines++;
-                        }
+                        ReadPathSpeed.Scanned scanned = ReadPathSpeed.scanEveryField(bl, "x", tum, fields);
+                        lines = scanned.lines();
+                        sum = scanned.checksum();
                     }
                     bl.finishSha256();
                 }

@@ -68,30 +68,11 @@ public final class ReadPathSpeed {
             });
             long numbers = lineCount[0] * fields;
             time("numbers", size, numbers, () -> {
-                double sum = 0;
                 try (ByteLines lines = ByteLines.open(file, file.toString(), Long.MAX_VALUE)) {
-                    NumericRows r = new NumericRows(lines, file.toString(), tum ? NumericRows.WHITESPACE : (byte) ',',
-                            !tum);
-                    if (!tum) {
-                        r.nextContentLine();
-                    }
-                    int[] select = new int[fields];
-                    String[] names = new String[fields];
-                    String[] units = new String[fields];
-                    for (int k = 0; k < fields; k++) {
-                        select[k] = k;
-                        names[k] = "c" + k;
-                        units[k] = "";
-                    }
-                    r.select(select, names, units);
-                    r.requireFields(fields, "test");
-                    double[] row = new double[fields];
-                    while (r.next(row)) {
-                        sum += row[1];
-                    }
+                    Scanned scanned = scanEveryField(lines, file.toString(), tum, fields);
                     lines.finishSha256();
+                    return (long) scanned.checksum();
                 }
-                return (long) sum;
             });
             time("read", size, numbers, () -> TrajectoryReader.read(file, ReadOptions.defaults()).trajectory().size());
         }
@@ -111,5 +92,38 @@ public final class ReadPathSpeed {
         System.out.printf(Locale.ROOT, "%-8s wall %7.3f s  cpu %7.3f s  %7.1f MB/s%s  (%d)%n", name, wall, cpu,
                 bytes / cpu / 1e6, numbers > 0 ? String.format(Locale.ROOT, "  %6.2f ns/number", cpu * 1e9 / numbers) : "",
                 r);
+    }
+
+    /** What {@link #scanEveryField} read: the data lines, and a sum of their numbers (so no scan is optimised away). */
+    record Scanned(long lines, double checksum) {
+    }
+
+    /**
+     * Splits every line of {@code lines} and scans each of its {@code fields} numbers ({@link NumericRows},
+     * every field selected): TUM's spaces, or a planar CSV with a header.
+     */
+    static Scanned scanEveryField(ByteLines lines, String name, boolean tum, int fields) {
+        NumericRows r = new NumericRows(lines, name, tum ? NumericRows.WHITESPACE : (byte) ',', !tum);
+        if (!tum) {
+            r.nextContentLine();
+        }
+        int[] select = new int[fields];
+        String[] names = new String[fields];
+        String[] units = new String[fields];
+        for (int k = 0; k < fields; k++) {
+            select[k] = k;
+            names[k] = "c" + k;
+            units[k] = "";
+        }
+        r.select(select, names, units);
+        r.requireFields(fields, "test");
+        double[] row = new double[fields];
+        long n = 0;
+        double sum = 0;
+        while (r.next(row)) {
+            sum += row[1] + row[fields - 1];
+            n++;
+        }
+        return new Scanned(n, sum);
     }
 }
