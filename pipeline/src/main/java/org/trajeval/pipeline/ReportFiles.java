@@ -1,17 +1,10 @@
 package org.trajeval.pipeline;
 
-import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.nio.ByteBuffer;
-import java.nio.channels.FileChannel;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.AtomicMoveNotSupportedException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
-import java.nio.file.StandardOpenOption;
-import java.nio.file.attribute.PosixFilePermissions;
 import java.util.function.BiConsumer;
+import org.trajeval.core.report.ReportJson;
 
 /**
  * How report files become durable in two steps, so that a group commit holds the ledger's lock only
@@ -88,70 +81,29 @@ public interface ReportFiles {
 
         @Override
         public Staged stage(Path target, String text) {
-            Path dir = target.toAbsolutePath().getParent();
-            Path tmp = null;
-            try {
-                Files.createDirectories(dir);
-                tmp = Files.createTempFile(dir, "." + target.getFileName() + ".", ".tmp");
-                try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE,
-                        StandardOpenOption.TRUNCATE_EXISTING)) {
-                    ByteBuffer b = ByteBuffer.wrap(text.getBytes(StandardCharsets.UTF_8));
-                    while (b.hasRemaining()) {
-                        ch.write(b);
-                    }
-                    ch.force(true);
-                }
-                try {
-                    Files.setPosixFilePermissions(tmp, PosixFilePermissions.fromString("rw-r--r--"));
-                } catch (UnsupportedOperationException ignored) {
-                    // not a POSIX file system: keep the default mode
-                }
-                return new Written(target, tmp);
-            } catch (IOException e) {
-                deleteQuietly(tmp);
-                throw new UncheckedIOException("could not write " + target, e);
-            }
+            byte[] bytes = text.getBytes(StandardCharsets.UTF_8);
+            return new Written(target, ReportJson.writeBeside(target, out -> out.write(bytes)));
         }
 
         @Override
         public void publish(Staged staged) {
             Written w = (Written) staged;
             try {
-                try {
-                    Files.move(w.tmp(), w.target(), StandardCopyOption.ATOMIC_MOVE,
-                            StandardCopyOption.REPLACE_EXISTING);
-                } catch (AtomicMoveNotSupportedException e) {
-                    Files.move(w.tmp(), w.target(), StandardCopyOption.REPLACE_EXISTING);
-                }
-            } catch (IOException e) {
-                deleteQuietly(w.tmp());
-                throw new UncheckedIOException("could not write " + w.target(), e);
+                ReportJson.moveIntoPlace(w.tmp(), w.target());
+            } catch (UncheckedIOException e) {
+                ReportJson.deleteQuietly(w.tmp());
+                throw e;
             }
         }
 
         @Override
         public void syncFolder(Path dir) {
-            try (FileChannel ch = FileChannel.open(dir, StandardOpenOption.READ)) {
-                ch.force(true);
-            } catch (IOException ignored) {
-                // some file systems cannot open a directory for fsync; the rename is still atomic
-            }
+            ReportJson.fsyncDirectory(dir);
         }
 
         @Override
         public void discard(Staged staged) {
-            deleteQuietly(((Written) staged).tmp());
-        }
-
-        private static void deleteQuietly(Path p) {
-            if (p == null) {
-                return;
-            }
-            try {
-                Files.deleteIfExists(p);
-            } catch (IOException ignored) {
-                // a leftover temporary file is removed by the next start once stale (StaleTempFiles)
-            }
+            ReportJson.deleteQuietly(((Written) staged).tmp());
         }
     }
 }

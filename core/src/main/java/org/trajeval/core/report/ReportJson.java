@@ -106,38 +106,80 @@ public final class ReportJson {
      * (large series are never held in memory whole).
      */
     public static void writeAtomically(Path target, Content content) {
-        Path dir = target.toAbsolutePath().getParent();
+        Path tmp = writeBeside(target, content);
         try {
+            moveIntoPlace(tmp, target);
+            fsyncDirectory(target.toAbsolutePath().getParent());
+        } finally {
+            deleteQuietly(tmp);
+        }
+    }
+
+    /**
+     * The first step of {@link #writeAtomically(Path, Content)}: the content in a temporary file
+     * beside {@code target} ({@code .NAME.*.tmp}), fsync'd, mode 0644 (where the file system has
+     * POSIX modes); the caller then {@link #moveIntoPlace moves it into place} or deletes it.
+     *
+     * @return the temporary file
+     * @throws UncheckedIOException when it cannot be written (nothing is left behind)
+     */
+    public static Path writeBeside(Path target, Content content) {
+        Path tmp = null;
+        try {
+            Path dir = target.toAbsolutePath().getParent();
             Files.createDirectories(dir);
-            Path tmp = Files.createTempFile(dir, "." + target.getFileName() + ".", ".tmp");
+            tmp = Files.createTempFile(dir, "." + target.getFileName() + ".", ".tmp");
+            try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE,
+                    StandardOpenOption.TRUNCATE_EXISTING)) {
+                java.io.OutputStream out = java.nio.channels.Channels.newOutputStream(ch);
+                content.writeTo(out);
+                out.flush();
+                ch.force(true);
+            }
             try {
-                try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE,
-                        StandardOpenOption.TRUNCATE_EXISTING)) {
-                    java.io.OutputStream out = java.nio.channels.Channels.newOutputStream(ch);
-                    content.writeTo(out);
-                    out.flush();
-                    ch.force(true);
-                }
-                try {
-                    Files.setPosixFilePermissions(tmp, PosixFilePermissions.fromString("rw-r--r--"));
-                } catch (UnsupportedOperationException ignored) {
-                    // not a POSIX file system: keep the default mode
-                }
-                try {
-                    Files.move(tmp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-                } catch (AtomicMoveNotSupportedException e) {
-                    Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING);
-                }
-                fsyncDirectory(dir);
-            } finally {
-                Files.deleteIfExists(tmp);
+                Files.setPosixFilePermissions(tmp, PosixFilePermissions.fromString("rw-r--r--"));
+            } catch (UnsupportedOperationException ignored) {
+                // not a POSIX file system: keep the default mode
+            }
+            return tmp;
+        } catch (IOException e) {
+            deleteQuietly(tmp);
+            throw new UncheckedIOException("could not write " + target, e);
+        }
+    }
+
+    /**
+     * The second step: renames a file {@link #writeBeside written beside} {@code target} over it,
+     * atomically where the file system can. The folder is not fsync'd ({@link #fsyncDirectory}).
+     *
+     * @throws UncheckedIOException when the rename fails
+     */
+    public static void moveIntoPlace(Path tmp, Path target) {
+        try {
+            try {
+                Files.move(tmp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+            } catch (AtomicMoveNotSupportedException e) {
+                Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING);
             }
         } catch (IOException e) {
             throw new UncheckedIOException("could not write " + target, e);
         }
     }
 
-    private static void fsyncDirectory(Path dir) {
+    /** Deletes {@code p} if it exists (null: nothing); a file that cannot be deleted is left. */
+    public static void deleteQuietly(Path p) {
+        if (p == null) {
+            return;
+        }
+        try {
+            Files.deleteIfExists(p);
+        } catch (IOException ignored) {
+            // a leftover temporary file is hidden (.NAME.*.tmp); the pipeline removes stale ones at start
+        }
+    }
+
+    /** Fsyncs a folder, so that a rename in it is durable; a file system that cannot open one is skipped. */
+    public static void fsyncDirectory(Path dir) {
         try (FileChannel ch = FileChannel.open(dir, StandardOpenOption.READ)) {
             ch.force(true);
         } catch (IOException ignored) {
