@@ -55,9 +55,9 @@ public final class ResultsStore implements AutoCloseable {
     public static ResultsStore open(StoreLocation location, Clock clock) {
         Properties p = location.connectionProperties();
         if (location.dialect() == Dialect.SQLITE) {
-            p.setProperty("journal_mode", "WAL");
+            // WAL is switched on after connecting (SqliteWal), waiting for other connections' locks
             p.setProperty("synchronous", "NORMAL");
-            p.setProperty("busy_timeout", "30000");
+            p.setProperty("busy_timeout", Integer.toString(SqliteWal.BUSY_TIMEOUT_MS));
             p.setProperty("transaction_mode", "IMMEDIATE");
             p.setProperty("foreign_keys", "true");
         } else {
@@ -72,6 +72,9 @@ public final class ResultsStore implements AutoCloseable {
                     + ": cannot connect (" + oneLine(e) + ")", e);
         }
         try {
+            if (location.dialect() == Dialect.SQLITE) {
+                enableWal(c, location);
+            }
             int migrated = Migrations.migrate(c, location.dialect(), clock, location.display());
             ResultsStore store = new ResultsStore(location, c);
             if (location.dialect() == Dialect.SQLITE) {
@@ -92,6 +95,16 @@ public final class ResultsStore implements AutoCloseable {
         } catch (RuntimeException e) {
             closeQuietly(c);
             throw e;
+        }
+    }
+
+    private static void enableWal(Connection c, StoreLocation location) {
+        try {
+            SqliteWal.enable(c);
+        } catch (SQLException e) {
+            closeQuietly(c);
+            throw new StoreException(StoreException.Problem.UNAVAILABLE, location.display()
+                    + ": cannot switch to WAL mode (" + oneLine(e) + ")", e);
         }
     }
 

@@ -42,6 +42,30 @@ class SqliteStoreTest extends ResultsStoreContract {
     }
 
     @Test
+    void openingWaitsForAnotherConnectionsLockInsteadOfFailingBusy() throws Exception {
+        // SQLite answers the switch to WAL with SQLITE_BUSY at once, without its busy handler, while
+        // another connection holds a lock: two processes opening a fresh store at the same moment
+        StoreLocation loc = freshLocation();
+        try (Connection other = DriverManager.getConnection(loc.jdbcUrl()); Statement s = other.createStatement()) {
+            s.executeUpdate("CREATE TABLE held (x)");
+            other.setAutoCommit(false);
+            s.executeQuery("SELECT count(*) FROM held").close();
+            s.executeUpdate("INSERT INTO held VALUES (1)");
+            java.util.concurrent.CompletableFuture<Void> opened = java.util.concurrent.CompletableFuture.runAsync(
+                    () -> ResultsStore.open(loc, CLOCK).close());
+            Thread.sleep(300);
+            assertTrue(!opened.isDone(), "the store waits while the other connection writes");
+            other.commit();
+            opened.get(30, java.util.concurrent.TimeUnit.SECONDS);
+        }
+        try (Connection c = DriverManager.getConnection(loc.jdbcUrl()); Statement s = c.createStatement();
+                ResultSet rs = s.executeQuery("PRAGMA journal_mode")) {
+            rs.next();
+            assertEquals("wal", rs.getString(1));
+        }
+    }
+
+    @Test
     void aChangedMigrationIsRefused() throws Exception {
         StoreLocation loc = freshLocation();
         ResultsStore.open(loc, CLOCK).close();
