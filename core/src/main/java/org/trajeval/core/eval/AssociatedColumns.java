@@ -131,7 +131,7 @@ final class AssociatedColumns implements PosePairs {
     /** Sets the alignment applied to the estimate before the errors (identity for model NONE). */
     void align(AlignmentTransform tf) {
         spatial = new SpatialErrors(this, est, ateRotation, tf);
-        planar = PlanarErrors.of(est, estIndex, k0, interpolated, ref, refIndex, tf);
+        planar = PlanarErrors.of(est, estIndex, k0, interpolated, ref, refIndex, tf, m);
     }
 
     /**

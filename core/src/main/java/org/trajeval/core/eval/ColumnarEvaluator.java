@@ -22,8 +22,9 @@ import org.trajeval.core.traj.Trajectory;
  *
  * <p>Memory on top of the inputs: the reference interpolated at the estimate stamps (planar 24 B;
  * SE(3) 20 B per pose: its bracket and the ATE rotation errors the RPE computes; none for nearest
- * matching, 8 B of index maps instead) and two error arrays (16 B per pose) that the RPE and then
- * the ATE fill; every RPE pair and every ATE pose is computed once.
+ * matching, 8 B of index maps instead), for planar kernels the ATE rotation errors the RPE
+ * computes (8 B per pose), and two error arrays (16 B per pose) that the RPE and then the ATE fill;
+ * every RPE pair and every ATE pose is computed once.
  */
 final class ColumnarEvaluator {
     private ColumnarEvaluator() {

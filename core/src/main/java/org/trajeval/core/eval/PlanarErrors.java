@@ -1,5 +1,6 @@
 package org.trajeval.core.eval;
 
+import java.util.Arrays;
 import org.trajeval.core.align.AlignmentModel;
 import org.trajeval.core.align.AlignmentTransform;
 import org.trajeval.core.assoc.InterpolatedReference;
@@ -24,6 +25,9 @@ import org.trajeval.core.traj.PlanarTrajectory;
  * <p>Each (cos, sin) of a yaw costs two library calls; an RPE pair touches two poses and the ATE
  * one. {@link Window} keeps those of the poses a thread met last (a ring over pose indices,
  * 32 B per slot, chunk-local), so the RPE computes them once per pose when pairs move forward.
+ * While a pose's (cos, sin) are at hand there, its ATE rotation error is computed too and kept
+ * (8 B per pose, NaN until computed), so the ATE pass that follows the RPE needs no (cos, sin) for
+ * those poses: the same operations on the same values, so the same bits.
  */
 final class PlanarErrors {
     private final PlanarTrajectory est;
@@ -39,9 +43,14 @@ final class PlanarErrors {
     private final double tx;
     private final double ty;
     private final double scale;
+    /**
+     * ATE rotation errors (rad) of the pairs whose (cos, sin) a {@link Window} computed, NaN for the
+     * others; threads whose windows overlap write the same value.
+     */
+    private final double[] ateRotation;
 
     private PlanarErrors(PlanarTrajectory est, int[] estIndex, int k0, InterpolatedReference interpolated,
-            PlanarTrajectory ref, int[] refIndex, double[] r, double[] t, double scale) {
+            PlanarTrajectory ref, int[] refIndex, double[] r, double[] t, double scale, int m) {
         this.est = est;
         this.estIndex = estIndex;
         this.k0 = k0;
@@ -55,6 +64,8 @@ final class PlanarErrors {
         this.tx = t[0];
         this.ty = t[1];
         this.scale = scale;
+        this.ateRotation = new double[m];
+        Arrays.fill(ateRotation, Double.NaN);
     }
 
     /**
@@ -62,19 +73,19 @@ final class PlanarErrors {
      *     the alignment is not a rotation about +z without z translation (the matrix kernels apply)
      */
     static PlanarErrors of(Object est, int[] estIndex, int k0, InterpolatedReference interpolated, Object ref,
-            int[] refIndex, AlignmentTransform tf) {
+            int[] refIndex, AlignmentTransform tf, int m) {
         if (!(est instanceof PlanarTrajectory pe) || !(ref instanceof PlanarTrajectory pr)
                 || interpolated != null && !interpolated.isPlanar()) {
             return null;
         }
         if (tf.model() == AlignmentModel.NONE) {
             return new PlanarErrors(pe, estIndex, k0, interpolated, pr, refIndex,
-                    new double[] {1, 0, 0, 0, 1, 0, 0, 0, 1}, new double[3], 1.0);
+                    new double[] {1, 0, 0, 0, 1, 0, 0, 0, 1}, new double[3], 1.0, m);
         }
         double[] r = tf.rotation();
         double[] t = tf.translation();
         boolean aboutZ = r[2] == 0.0 && r[5] == 0.0 && r[6] == 0.0 && r[7] == 0.0 && r[8] == 1.0 && t[2] == 0.0;
-        return aboutZ ? new PlanarErrors(pe, estIndex, k0, interpolated, pr, refIndex, r, t, tf.scale()) : null;
+        return aboutZ ? new PlanarErrors(pe, estIndex, k0, interpolated, pr, refIndex, r, t, tf.scale(), m) : null;
     }
 
     private int estAt(int k) {
@@ -93,14 +104,35 @@ final class PlanarErrors {
         return interpolated != null ? interpolated.yaw(k) : ref.yaw(refIndex[k]);
     }
 
-    /** Writes cos, sin of the estimate yaw and cos, sin of the reference yaw of pair k into v[o..o+4). */
+    /**
+     * Writes cos, sin of the estimate yaw and cos, sin of the reference yaw of pair k into v[o..o+4),
+     * and the pair's ATE rotation error into {@link #ateRotation}.
+     */
     private void trig(int k, double[] v, int o) {
         double ye = est.yaw(estAt(k));
         double yr = refYaw(k);
-        v[o] = Math.cos(ye);
-        v[o + 1] = Math.sin(ye);
-        v[o + 2] = Math.cos(yr);
-        v[o + 3] = Math.sin(yr);
+        double ce = Math.cos(ye);
+        double se = Math.sin(ye);
+        double cr = Math.cos(yr);
+        double sr = Math.sin(yr);
+        v[o] = ce;
+        v[o + 1] = se;
+        v[o + 2] = cr;
+        v[o + 3] = sr;
+        ateRotation[k] = ateAngle(ce, se, cr, sr);
+    }
+
+    /**
+     * The angle (rad) of R'^T R_ref, R' = A R_est, for R_est = [[ce, -se], [se, ce]] and
+     * R_ref = [[cr, -sr], [sr, cr]]: the ATE rotation error of a pose.
+     */
+    private double ateAngle(double ce, double se, double cr, double sr) {
+        double r00 = a00 * ce + a01 * se;
+        double r01 = a00 * -se + a01 * ce;
+        double r10 = a10 * ce + a11 * se;
+        double r11 = a10 * -se + a11 * ce;
+        // E = R'^T R_ref
+        return PlanarAngle.of(r00 * cr + r10 * sr, r00 * -sr + r10 * cr, r01 * cr + r11 * sr, r01 * -sr + r11 * cr);
     }
 
     /**
@@ -111,12 +143,6 @@ final class PlanarErrors {
      */
     boolean ate(int k, AssociatedColumns.Scratch s) {
         int e = estAt(k);
-        double ye = est.yaw(e);
-        double yr = refYaw(k);
-        double ce = Math.cos(ye);
-        double se = Math.sin(ye);
-        double cr = Math.cos(yr);
-        double sr = Math.sin(yr);
         // aligned estimate p' = A (s p) + t, R' = A R_est
         double px = scale * est.x(e);
         double py = scale * est.y(e);
@@ -126,14 +152,15 @@ final class PlanarErrors {
         if (!Double.isFinite(trans)) {
             return false;
         }
-        double r00 = a00 * ce + a01 * se;
-        double r01 = a00 * -se + a01 * ce;
-        double r10 = a10 * ce + a11 * se;
-        double r11 = a10 * -se + a11 * ce;
-        // E = R'^T R_ref
         s.transError = trans;
-        s.rotError = PlanarAngle.of(r00 * cr + r10 * sr, r00 * -sr + r10 * cr, r01 * cr + r11 * sr,
-                r01 * -sr + r11 * cr);
+        double known = ateRotation[k];
+        if (!Double.isNaN(known)) {
+            s.rotError = known;
+            return true;
+        }
+        double ye = est.yaw(e);
+        double yr = refYaw(k);
+        s.rotError = ateAngle(Math.cos(ye), Math.sin(ye), Math.cos(yr), Math.sin(yr));
         return true;
     }
 

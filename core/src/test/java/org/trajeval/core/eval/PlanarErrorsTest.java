@@ -27,7 +27,8 @@ import org.trajeval.core.traj.PlanarTrajectory;
  * with yaws near 0 and +-pi and wrapping over many turns, tiny, ordinary, huge and overflowing
  * coordinates, every alignment model, interpolated and nearest association, and the pairs of every
  * RPE rule (frames and seconds, every start and consecutive), with windows restarted as at chunk
- * boundaries and pairs further apart than the window's first capacity.
+ * boundaries and pairs further apart than the window's first capacity; the ATE both before the
+ * RPE and after it, when the windows have kept every pose's ATE rotation error.
  */
 class PlanarErrorsTest {
     /** The models whose transform on planar data is a rotation about +z: the planar kernels must take them. */
@@ -63,6 +64,7 @@ class PlanarErrorsTest {
                     planarRuns += fast.planarKernels() ? 1 : 0;
                     sameAte(fast, matrix, what);
                     samePairs(fast, matrix, what);
+                    sameAte(fast, matrix, what + " after the RPE windows");
                 }
             }
         }
