@@ -25,9 +25,11 @@ import org.trajeval.core.traj.PlanarTrajectory;
  * <p>Each (cos, sin) of a yaw costs two library calls; an RPE pair touches two poses and the ATE
  * one. {@link Window} keeps those of the poses a thread met last (a ring over pose indices,
  * 32 B per slot, chunk-local), so the RPE computes them once per pose when pairs move forward.
- * While a pose's (cos, sin) are at hand there, its ATE rotation error is computed too and kept
- * (8 B per pose, NaN until computed), so the ATE pass that follows the RPE needs no (cos, sin) for
- * those poses: the same operations on the same values, so the same bits.
+ * The RPE of a pair (i, j) also computes the ATE rotation error of its start pose i, whose
+ * (cos, sin) and aligned rotation it has at hand, side by side with its own angle
+ * ({@link PlanarAngle#two}), and keeps it (8 B per pose, NaN until computed), so the ATE pass that
+ * follows the RPE takes no (cos, sin) and no angle for those poses: the same operations on the same
+ * values, so the same bits.
  */
 final class PlanarErrors {
     private final PlanarTrajectory est;
@@ -44,8 +46,8 @@ final class PlanarErrors {
     private final double ty;
     private final double scale;
     /**
-     * ATE rotation errors (rad) of the pairs whose (cos, sin) a {@link Window} computed, NaN for the
-     * others; threads whose windows overlap write the same value.
+     * ATE rotation errors (rad) of the poses an RPE pair started from, NaN for the others; threads
+     * whose pairs share a start pose write the same value.
      */
     private final double[] ateRotation;
 
@@ -104,22 +106,14 @@ final class PlanarErrors {
         return interpolated != null ? interpolated.yaw(k) : ref.yaw(refIndex[k]);
     }
 
-    /**
-     * Writes cos, sin of the estimate yaw and cos, sin of the reference yaw of pair k into v[o..o+4),
-     * and the pair's ATE rotation error into {@link #ateRotation}.
-     */
+    /** Writes cos, sin of the estimate yaw and cos, sin of the reference yaw of pair k into v[o..o+4). */
     private void trig(int k, double[] v, int o) {
         double ye = est.yaw(estAt(k));
         double yr = refYaw(k);
-        double ce = Math.cos(ye);
-        double se = Math.sin(ye);
-        double cr = Math.cos(yr);
-        double sr = Math.sin(yr);
-        v[o] = ce;
-        v[o + 1] = se;
-        v[o + 2] = cr;
-        v[o + 3] = sr;
-        ateRotation[k] = ateAngle(ce, se, cr, sr);
+        v[o] = Math.cos(ye);
+        v[o + 1] = Math.sin(ye);
+        v[o + 2] = Math.cos(yr);
+        v[o + 3] = Math.sin(yr);
     }
 
     /**
@@ -235,8 +229,13 @@ final class PlanarErrors {
             return false;
         }
         s.transError = trans;
-        s.rotError = PlanarAngle.of(q00 * p00 + q10 * p10, q00 * p01 + q10 * p11, q01 * p00 + q11 * p10,
-                q01 * p01 + q11 * p11);
+        // with the ATE rotation error of pose i, the angle of R'_i^T R_ref,i (R'_i = [[i00, i01], [i10, i11]],
+        // the block of ateAngle): two angles side by side
+        double[] two = s.angles;
+        PlanarAngle.two(q00 * p00 + q10 * p10, q00 * p01 + q10 * p11, q01 * p00 + q11 * p10, q01 * p01 + q11 * p11,
+                i00 * cri + i10 * sri, i00 * -sri + i10 * cri, i01 * cri + i11 * sri, i01 * -sri + i11 * cri, two, 0);
+        s.rotError = two[0];
+        ateRotation[i] = two[1];
         return true;
     }
 

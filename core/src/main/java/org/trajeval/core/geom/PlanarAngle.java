@@ -27,25 +27,11 @@ public final class PlanarAngle {
 
     /** @return the rotation angle (rad) of [[m00, m01, 0], [m10, m11, 0], [0, 0, 1]] as {@link Rotations#angle} */
     public static double of(double m00, double m01, double m10, double m11) {
-        double tol = 1e-12 + 1e-5 * Math.abs(1.0);
-        if (!(Math.abs(m00 * m00 + m01 * m01 - 1.0) <= tol) || !(Math.abs(m10 * m10 + m11 * m11 - 1.0) <= tol)
-                || !(Math.abs(m00 * m10 + m01 * m11) <= 1e-12)) {
+        if (!shepperdAboutZ(m00, m01, m10, m11)) {
             return general(m00, m01, m10, m11);
         }
-        double trace = m00 + m11 + 1.0;
-        double best = Math.max(m00, m11);
-        if (!(1.0 > best) && !(trace > best)) {
-            return general(m00, m01, m10, m11); // Shepperd's m00 or m11 branch
-        }
-        double z;
-        double w;
-        if (!(1.0 > best) || trace > 1.0) { // Shepperd's trace branch (else its m22 branch)
-            z = m10 - m01;
-            w = 1 + trace;
-        } else {
-            z = 1 - trace + 2.0;
-            w = m10 - m01;
-        }
+        double z = quaternionZ(m00, m01, m10, m11);
+        double w = quaternionW(m00, m01, m10, m11);
         double norm = Math.sqrt(z * z + w * w);
         z /= norm;
         w /= norm;
@@ -57,6 +43,77 @@ public final class PlanarAngle {
         double angle = 2 * StrictAtan2.atan2(axNorm, w); // Math.atan2's bits, without its JNI call
         double vz = Rotations.rotationVectorScale(angle) * z;
         return rootOfSquare(vz);
+    }
+
+    /**
+     * The angles (rad) of two blocks M and N into {@code out[o]} and {@code out[o + 1]}, as two
+     * calls of {@link #of} would give them: the same steps, taken side by side so that the processor
+     * overlaps the two chains of long latency (a square root, two divisions, atan2, a sine each).
+     */
+    public static void two(double m00, double m01, double m10, double m11, double n00, double n01, double n10,
+            double n11, double[] out, int o) {
+        if (!shepperdAboutZ(m00, m01, m10, m11) || !shepperdAboutZ(n00, n01, n10, n11)) {
+            out[o] = of(m00, m01, m10, m11);
+            out[o + 1] = of(n00, n01, n10, n11);
+            return;
+        }
+        double za = quaternionZ(m00, m01, m10, m11);
+        double wa = quaternionW(m00, m01, m10, m11);
+        double zb = quaternionZ(n00, n01, n10, n11);
+        double wb = quaternionW(n00, n01, n10, n11);
+        double norma = Math.sqrt(za * za + wa * wa);
+        double normb = Math.sqrt(zb * zb + wb * wb);
+        za /= norma;
+        zb /= normb;
+        wa /= norma;
+        wb /= normb;
+        if (wa < 0) {
+            za = -za;
+            wa = -wa;
+        }
+        if (wb < 0) {
+            zb = -zb;
+            wb = -wb;
+        }
+        double anglea = 2 * StrictAtan2.atan2(rootOfSquare(za), wa);
+        double angleb = 2 * StrictAtan2.atan2(rootOfSquare(zb), wb);
+        double vza = Rotations.rotationVectorScale(anglea) * za;
+        double vzb = Rotations.rotationVectorScale(angleb) * zb;
+        out[o] = rootOfSquare(vza);
+        out[o + 1] = rootOfSquare(vzb);
+    }
+
+    /**
+     * @return true when the block passes the orthogonality test and Shepperd takes its trace or
+     *     m22 branch (the quaternion (0, 0, {@link #quaternionZ}, {@link #quaternionW}) before
+     *     normalisation); false for the cases {@link Rotations#angle} itself computes
+     */
+    private static boolean shepperdAboutZ(double m00, double m01, double m10, double m11) {
+        double tol = 1e-12 + 1e-5 * Math.abs(1.0);
+        if (!(Math.abs(m00 * m00 + m01 * m01 - 1.0) <= tol) || !(Math.abs(m10 * m10 + m11 * m11 - 1.0) <= tol)
+                || !(Math.abs(m00 * m10 + m01 * m11) <= 1e-12)) {
+            return false;
+        }
+        double trace = m00 + m11 + 1.0;
+        double best = Math.max(m00, m11);
+        return 1.0 > best || trace > best; // else Shepperd's m00 or m11 branch
+    }
+
+    /** Shepperd's unnormalised z of a block {@link #shepperdAboutZ} accepts: trace branch m10 - m01, m22 branch (1 - trace) + 2. */
+    private static double quaternionZ(double m00, double m01, double m10, double m11) {
+        double trace = m00 + m11 + 1.0;
+        return traceBranch(m00, m11, trace) ? m10 - m01 : 1 - trace + 2.0;
+    }
+
+    /** Shepperd's unnormalised w of a block {@link #shepperdAboutZ} accepts: trace branch 1 + trace, m22 branch m10 - m01. */
+    private static double quaternionW(double m00, double m01, double m10, double m11) {
+        double trace = m00 + m11 + 1.0;
+        return traceBranch(m00, m11, trace) ? 1 + trace : m10 - m01;
+    }
+
+    /** @return true for Shepperd's trace branch, false for its m22 branch */
+    private static boolean traceBranch(double m00, double m11, double trace) {
+        return !(1.0 > Math.max(m00, m11)) || trace > 1.0;
     }
 
     /**

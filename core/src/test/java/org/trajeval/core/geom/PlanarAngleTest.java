@@ -81,6 +81,46 @@ class PlanarAngleTest {
     }
 
     @Test
+    void twoBlocksSideBySideGiveEachBlocksMatrixAngle() {
+        // reference: Rotations.angle of each 3x3 matrix; the pairs mix every kind of block, so that
+        // either one (or both) may need the general path
+        Random rnd = new Random(19);
+        for (int trial = 0; trial < 100_000; trial++) {
+            double[] a = block(rnd, trial % 7);
+            double[] b = block(rnd, rnd.nextInt(7));
+            double[] out = {Double.NaN, 7.0, 7.0, Double.NaN};
+            PlanarAngle.two(a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3], out, 1);
+            double ea = Rotations.angle(new double[] {a[0], a[1], 0, a[2], a[3], 0, 0, 0, 1}, 0);
+            double eb = Rotations.angle(new double[] {b[0], b[1], 0, b[2], b[3], 0, 0, 0, 1}, 0);
+            int t = trial;
+            assertEquals(Double.doubleToRawLongBits(ea), Double.doubleToRawLongBits(out[1]), () -> "first of pair " + t);
+            assertEquals(Double.doubleToRawLongBits(eb), Double.doubleToRawLongBits(out[2]), () -> "second of pair " + t);
+            assertTrue(Double.isNaN(out[0]) && Double.isNaN(out[3]), "only out[o] and out[o + 1] are written");
+        }
+    }
+
+    /** A block of kind 0 any rotation, 1 small angle, 2 near +-pi, 3 a product of two rotations, 4 off orthogonal, 5 a reflection, 6 NaN. */
+    private static double[] block(Random rnd, int kind) {
+        double yaw = switch (kind) {
+            case 1 -> rnd.nextGaussian() * 1e-3;
+            case 2 -> (rnd.nextBoolean() ? Math.PI : -Math.PI) - Math.signum(rnd.nextGaussian()) * 1e-7;
+            default -> (rnd.nextDouble() - 0.5) * 2 * Math.PI;
+        };
+        double c = Math.cos(yaw);
+        double s = Math.sin(yaw);
+        double c2 = Math.cos(0.3);
+        double s2 = Math.sin(0.3);
+        double e = 1e-6 * rnd.nextGaussian();
+        return switch (kind) {
+            case 3 -> new double[] {c * c2 + s * s2, c * -s2 + s * c2, -s * c2 + c * s2, -s * -s2 + c * c2};
+            case 4 -> new double[] {c + e, -s, s, c - e};
+            case 5 -> new double[] {c, s, s, -c};
+            case 6 -> new double[] {Double.NaN, 0, 0, 1};
+            default -> new double[] {c, -s, s, c};
+        };
+    }
+
+    @Test
     void rootOfSquareIsTheSquareRootOfTheSquareBitForBitAtEveryExponent() {
         // reference: Math.sqrt(x * x) itself, on seeded mantissas at every binary exponent (subnormals
         // included) and at the edges of the range where |x| is returned (2^-511, 2^511)
