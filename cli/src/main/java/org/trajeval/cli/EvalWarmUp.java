@@ -37,11 +37,13 @@ final class EvalWarmUp {
     }
 
     /**
-     * Starts the warm-up for the launcher's arguments when they are an {@code eval} and a second
-     * processor is available (on one, the warm-up would only delay the main thread).
+     * Starts the warm-up for the launcher's arguments when they are an {@code eval}, a second
+     * processor is available (on one, the warm-up would only delay the main thread) and
+     * {@code --threads 1} (everything on one thread) is not given.
      */
     static void startFor(String[] args) {
-        if (args.length < 2 || !args[0].equals("eval") || Runtime.getRuntime().availableProcessors() < 2) {
+        if (args.length < 2 || !args[0].equals("eval") || Runtime.getRuntime().availableProcessors() < 2
+                || oneThread(args)) {
             return;
         }
         boolean planar = args[1].toLowerCase(java.util.Locale.ROOT).endsWith(".csv");
@@ -55,6 +57,21 @@ final class EvalWarmUp {
         t.setDaemon(true);
         running = t;
         t.start();
+    }
+
+    private static boolean oneThread(String[] args) {
+        for (int i = 1; i < args.length; i++) {
+            if (args[i].equals("--threads=1") || args[i].equals("--threads") && i + 1 < args.length
+                    && args[i + 1].equals("1")) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** @return whether a warm-up was started and not yet waited for */
+    static boolean pending() {
+        return running != null;
     }
 
     /** Waits until a started warm-up is over (returns at once when none was started). */

@@ -1,7 +1,9 @@
 package org.trajeval.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -65,12 +67,21 @@ class EvalWarmUpTest {
     }
 
     @Test
-    void noWarmUpForOtherCommandsOrAnEvalWithoutFiles() {
-        EvalWarmUp.startFor(new String[] {"--version"});
-        EvalWarmUp.startFor(new String[] {"suite", "run", "x.yaml"});
-        EvalWarmUp.startFor(new String[] {"eval"});
-        assertEquals(0L, Thread.getAllStackTraces().keySet().stream()
-                .filter(t -> t.getName().equals("trajeval-warm-up")).count());
+    void noWarmUpForOtherCommandsAnEvalWithoutFilesOrOneThread() {
+        for (String[] args : new String[][] {{"--version"}, {"suite", "run", "x.yaml"}, {"eval"},
+            {"eval", "a.csv", "b.csv", "--threads", "1"}, {"eval", "a.csv", "b.csv", "--threads=1"}}) {
+            EvalWarmUp.startFor(args);
+            assertFalse(EvalWarmUp.pending(), String.join(" ", args));
+        }
         EvalWarmUp.awaitStarted(); // nothing started: returns at once
+    }
+
+    @Test
+    void anEvalOnTwoProcessorsStartsTheWarmUpAndTheCallWaitsForIt() {
+        assumeTrue(Runtime.getRuntime().availableProcessors() >= 2, "needs a second processor");
+        EvalWarmUp.startFor(new String[] {"eval", "a.csv", "b.csv", "--threads", "2"});
+        assertTrue(EvalWarmUp.pending());
+        EvalWarmUp.awaitStarted();
+        assertFalse(EvalWarmUp.pending());
     }
 }
