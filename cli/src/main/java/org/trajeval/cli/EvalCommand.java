@@ -96,6 +96,7 @@ public final class EvalCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
+        EvalWarmUp.awaitStarted();
         List<SettingText> given = new ArrayList<>(SettingOptions.given(spec.commandLine().getParseResult()));
         if (batch != null) {
             if (reference != null || estimate != null || out != null || json || plots.wanted()) {

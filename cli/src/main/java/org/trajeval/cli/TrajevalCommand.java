@@ -30,6 +30,7 @@ public final class TrajevalCommand implements Runnable {
 
     /** Entry point of the launcher. */
     public static void main(String[] args) {
+        EvalWarmUp.startFor(args);
         System.exit(newCommandLine(args).execute(args));
     }
 
