@@ -23,7 +23,8 @@ final class SettingOptions {
     /** Adds every setting's option (and its switches) to {@code spec}. */
     static void addTo(CommandSpec spec) {
         for (Setting s : Setting.values()) {
-            OptionSpec.Builder b = OptionSpec.builder(s.flag()).description(s.help());
+            // picocli reads a description as a format string: the help's plain "%" is written "%%"
+            OptionSpec.Builder b = OptionSpec.builder(s.flag()).description(s.help().replace("%", "%%"));
             if (s.kind() == SettingKind.SWITCH) {
                 b.type(boolean.class).arity("0");
             } else {
