@@ -57,25 +57,27 @@ record ColumnarAssociation(AssociatedColumns pairs, int dropped, int droppedRefe
                 : InterpolatedReference.spatial((SpatialTrajectory) ref, m);
         int first = k0;
         par.forEachChunk(m, (c, from, to) -> interp.fill(k -> est.t(first + k) + off, from, to));
-        return new ColumnarAssociation(AssociatedColumns.interpolated(ref, est, interp, k0, m, off), ne - m, 0,
+        return new ColumnarAssociation(AssociatedColumns.interpolated(ref, est, interp, k0, m, off, par), ne - m, 0,
                 sampling[0], sampling[1], limit);
     }
 
-    /** evo's nearest matching, as index maps. */
+    /** evo's nearest matching, as index maps; the search, the counts and the sampling spread over {@code par}. */
     static ColumnarAssociation nearest(Trajectory ref, Trajectory est, EvaluationOptions o, String refName,
-            String estName) {
+            String estName, Parallelism par) {
         TimeAssociation.NearestPairs np = TimeAssociation.nearestPairs(ref, est, new AssociationOptions(
-                o.association(), o.maxDiffS(), o.tOffsetS(), o.overlap(), o.maxGap()), refName, estName);
+                o.association(), o.maxDiffS(), o.tOffsetS(), o.overlap(), o.maxGap()), refName, estName, par);
         int m = np.count();
         if (m < 2) {
             return null;
         }
         int first = np.reference()[0];
         int last = np.reference()[m - 1];
+        int[] distinct = new int[2];
+        par.all(() -> distinct[0] = np.distinctEstimate(), () -> distinct[1] = np.distinctReference());
+        double[] sampling = referenceSampling(ref, first, last, par);
         return new ColumnarAssociation(
                 AssociatedColumns.matched(ref, est, np.reference(), np.estimate(), m, o.tOffsetS()),
-                est.size() - np.distinctEstimate(), ref.size() - np.distinctReference(),
-                ReferenceSampling.maxGap(ref, first, last), ReferenceSampling.maxAcceleration(ref, first, last),
+                est.size() - distinct[0], ref.size() - distinct[1], sampling[0], sampling[1],
                 Double.POSITIVE_INFINITY);
     }
 
