@@ -4,14 +4,15 @@ import org.trajeval.core.traj.Trajectory;
 
 /**
  * evo's nearest matching as index pairs (the rule is {@link TimeAssociation}'s): each stamp s of the
- * shorter trajectory, in order, is looked up in the longer one's stamps L (offset applied): k = the
+ * shorter trajectory, in order, is looked up in the longer one's stamps L (L[k] = t_long(k) + offset,
+ * computed where compared, not stored): k = the
  * first index with L[k] &gt; s (numpy's searchsorted, side right), clamped to the last index; the
  * later candidate k wins when L[k] - s &lt;= max diff and is strictly nearer, else the earlier k - 1
  * when s - L[k-1] &lt;= max diff. Stamps never decrease, so k is unique and the search for the next
  * stamp starts at the last k, galloping (probes 1, 2, 4, ... ahead, then bisects: O(log d) for a
  * step of d poses instead of O(log n) per stamp).
  *
- * <p>Both passes work in chunks of {@value #CHUNK} stamps that do not depend on one another (each
+ * <p>The stamps are matched in chunks of {@value #CHUNK} that do not depend on one another (each
  * chunk starts its search at 0), so the chunks may run on several threads ({@link IndexTasks}); each
  * chunk writes its pairs at its own start, and the chunks are then moved together in order. The
  * pairs are the same whatever runs the chunks.
@@ -33,16 +34,9 @@ final class NearestMatching {
     static int match(Trajectory shortTraj, Trajectory longTraj, double offsetLong, double maxDiff, int[] idxShort,
             int[] idxLong, IndexTasks tasks) {
         int ns = shortTraj.size();
-        int nl = longTraj.size();
-        double[] longStamps = new double[nl];
-        tasks.forEach(chunks(nl), c -> {
-            for (int i = c * CHUNK, end = end(c, nl); i < end; i++) {
-                longStamps[i] = longTraj.t(i) + offsetLong;
-            }
-        });
         int[] found = new int[chunks(ns)];
-        tasks.forEach(found.length, c -> found[c] = matchChunk(shortTraj, longStamps, maxDiff, c * CHUNK, end(c, ns),
-                idxShort, idxLong));
+        tasks.forEach(found.length, c -> found[c] = matchChunk(shortTraj, longTraj, offsetLong, maxDiff, c * CHUNK,
+                end(c, ns), idxShort, idxLong));
         int count = 0;
         for (int c = 0; c < found.length; c++) {
             int from = c * CHUNK;
@@ -64,23 +58,25 @@ final class NearestMatching {
     }
 
     /** Matches short stamps [from, to) and writes their pairs from index {@code from} on; @return how many */
-    private static int matchChunk(Trajectory shortTraj, double[] longStamps, double maxDiff, int from, int to,
-            int[] idxShort, int[] idxLong) {
-        int nl = longStamps.length;
+    private static int matchChunk(Trajectory shortTraj, Trajectory longTraj, double offsetLong, double maxDiff,
+            int from, int to, int[] idxShort, int[] idxLong) {
+        int nl = longTraj.size();
+        double first = longTraj.t(0) + offsetLong;
+        double last = longTraj.t(nl - 1) + offsetLong;
         int count = from;
         int hint = 0;
         for (int i = from; i < to; i++) {
             double s = shortTraj.t(i);
-            if (s < longStamps[0] - maxDiff || s > longStamps[nl - 1] + maxDiff) {
+            if (s < first - maxDiff || s > last + maxDiff) {
                 continue;
             }
-            int k = upperBound(longStamps, s, hint);
+            int k = upperBound(longTraj, offsetLong, s, hint);
             hint = k;
             if (k >= nl) {
                 k = nl - 1;
             }
-            double diffUb = longStamps[k] - s;
-            double diffLb = k > 0 ? s - longStamps[k - 1] : Double.POSITIVE_INFINITY;
+            double diffUb = (longTraj.t(k) + offsetLong) - s;
+            double diffLb = k > 0 ? s - (longTraj.t(k - 1) + offsetLong) : Double.POSITIVE_INFINITY;
             int best;
             if (diffUb <= maxDiff && diffUb < diffLb) {
                 best = k;
@@ -96,22 +92,23 @@ final class NearestMatching {
     }
 
     /**
-     * @return the first index k &gt;= from with a[k] &gt; v, or a.length, for a non-decreasing
-     *     with a[k] &lt;= v for every k &lt; from: gallops from {@code from}, then bisects
+     * @return the first index k &gt;= from with L[k] = t(k) + offset &gt; v (s), or t's size, for
+     *     L[k] &lt;= v at every k &lt; from: gallops from {@code from}, then bisects
      */
-    static int upperBound(double[] a, double v, int from) {
-        int lo = from; // every index below lo holds a value <= v
+    static int upperBound(Trajectory t, double offset, double v, int from) {
+        int n = t.size();
+        int lo = from; // L[k] <= v for every k < lo
         int probe = from;
         long step = 1;
-        while (probe < a.length && !(a[probe] > v)) {
+        while (probe < n && !(t.t(probe) + offset > v)) {
             lo = probe + 1;
-            probe = (int) Math.min(a.length, lo + step);
+            probe = (int) Math.min(n, lo + step);
             step <<= 1;
         }
-        int hi = probe; // a[hi] > v, or hi = a.length
+        int hi = probe; // L[hi] > v, or hi = n
         while (lo < hi) {
             int mid = (lo + hi) >>> 1;
-            if (a[mid] > v) {
+            if (t.t(mid) + offset > v) {
                 hi = mid;
             } else {
                 lo = mid + 1;

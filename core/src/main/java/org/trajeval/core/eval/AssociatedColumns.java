@@ -45,7 +45,7 @@ final class AssociatedColumns implements PosePairs {
     private PlanarErrors planar;
 
     private AssociatedColumns(Trajectory ref, Trajectory est, InterpolatedReference interpolated, int[] refIndex,
-            int[] estIndex, int k0, int m, double off, Parallelism par) {
+            int[] estIndex, int k0, int m, double off) {
         this.ref = ref;
         this.est = est;
         this.interpolated = interpolated;
@@ -57,27 +57,23 @@ final class AssociatedColumns implements PosePairs {
         this.refPositions = interpolated != null ? interpolated : new Mapped(ref, refIndex, 0);
         this.estPositions = new Mapped(est, estIndex, k0);
         if (interpolated != null && interpolated.isSpatial()) {
-            double[] a = new double[m];
-            par.forEachChunk(m, (c, from, to) -> Arrays.fill(a, from, to, Double.NaN));
-            this.ateRotation = a;
+            this.ateRotation = new double[m];
+            Arrays.fill(ateRotation, Double.NaN);
         } else {
             this.ateRotation = null;
         }
     }
 
-    /**
-     * Estimate poses [k0, k0 + m) paired with the reference interpolated at their stamps (filled by
-     * the caller); {@code par} spreads the set-up of the per-pose cache over its threads.
-     */
+    /** Estimate poses [k0, k0 + m) paired with the reference interpolated at their stamps (filled by the caller). */
     static AssociatedColumns interpolated(Trajectory ref, Trajectory est, InterpolatedReference interpolated, int k0,
-            int m, double off, Parallelism par) {
-        return new AssociatedColumns(ref, est, interpolated, null, null, k0, m, off, par);
+            int m, double off) {
+        return new AssociatedColumns(ref, est, interpolated, null, null, k0, m, off);
     }
 
     /** Pairs (reference refIndex[k], estimate estIndex[k]) for k &lt; m. */
     static AssociatedColumns matched(Trajectory ref, Trajectory est, int[] refIndex, int[] estIndex, int m,
             double off) {
-        return new AssociatedColumns(ref, est, null, refIndex, estIndex, 0, m, off, Parallelism.SEQUENTIAL);
+        return new AssociatedColumns(ref, est, null, refIndex, estIndex, 0, m, off);
     }
 
     @Override

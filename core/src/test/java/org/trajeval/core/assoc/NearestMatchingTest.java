@@ -24,7 +24,13 @@ class NearestMatchingTest {
     void gallopingFindsTheFirstGreaterStampAsBisectionDoes() {
         Random rnd = new Random(31);
         for (int trial = 0; trial < 200; trial++) {
-            double[] a = stamps(rnd, 1 + rnd.nextInt(3000), 0.3); // runs of equal stamps, irregular steps
+            double[] t = stamps(rnd, 1 + rnd.nextInt(3000), 0.3); // runs of equal stamps, irregular steps
+            double offset = trial % 2 == 0 ? 0.0 : -0.37 + trial;
+            PlanarTrajectory traj = trajectory(t);
+            double[] a = new double[t.length]; // the stamps the old search was given
+            for (int k = 0; k < t.length; k++) {
+                a[k] = t[k] + offset;
+            }
             for (int q = 0; q < 200; q++) {
                 double v = a[0] - 1 + (a[a.length - 1] - a[0] + 2) * rnd.nextDouble();
                 if (q % 4 == 0) {
@@ -33,7 +39,7 @@ class NearestMatchingTest {
                 int expected = upperBoundAsItWas(a, v, 0);
                 // any start at or below the answer whose predecessors are <= v gives it
                 int from = expected == 0 ? 0 : rnd.nextInt(expected + 1);
-                assertEquals(expected, NearestMatching.upperBound(a, v, from), "trial " + trial + " v " + v);
+                assertEquals(expected, NearestMatching.upperBound(traj, offset, v, from), "trial " + trial + " v " + v);
             }
         }
     }

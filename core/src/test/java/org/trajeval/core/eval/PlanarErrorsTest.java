@@ -108,7 +108,7 @@ class PlanarErrorsTest {
             int m = est.size();
             InterpolatedReference interp = InterpolatedReference.planar(ref, m);
             interp.fill(est::t, 0, m);
-            return AssociatedColumns.interpolated(ref, est, interp, 0, m, 0.0, Parallelism.SEQUENTIAL);
+            return AssociatedColumns.interpolated(ref, est, interp, 0, m, 0.0);
         }
         TimeAssociation.NearestPairs np = TimeAssociation.nearestPairs(ref, est,
                 new AssociationOptions(AssociationMethod.NEAREST, 0.02, 0.0, OverlapPolicy.CROP), "gt", "est");

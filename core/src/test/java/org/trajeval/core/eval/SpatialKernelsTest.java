@@ -99,7 +99,7 @@ class SpatialKernelsTest {
             InterpolatedReference interp = ref instanceof SpatialTrajectory s ? InterpolatedReference.spatial(s, m)
                     : InterpolatedReference.planar((PlanarTrajectory) ref, m);
             interp.fill(est::t, 0, m);
-            return AssociatedColumns.interpolated(ref, est, interp, 0, m, 0.0, Parallelism.SEQUENTIAL);
+            return AssociatedColumns.interpolated(ref, est, interp, 0, m, 0.0);
         }
         TimeAssociation.NearestPairs np = TimeAssociation.nearestPairs(ref, est,
                 new AssociationOptions(AssociationMethod.NEAREST, 0.02, 0.0, OverlapPolicy.CROP), "gt", "est");
