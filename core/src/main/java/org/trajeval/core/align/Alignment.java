@@ -29,12 +29,33 @@ public final class Alignment {
      * place (the same sums in the same order: the same bits).
      */
     public static AlignmentTransform fit(AlignmentModel model, PosePairs pairs, int nToAlign, String source) {
-        int n = nToAlign < 0 ? pairs.size() : Math.min(nToAlign, pairs.size());
+        return fit(model, pairs, nToAlign, source, null, null);
+    }
+
+    /** @return how many pairs, from the first, a fit with this {@code nToAlign} (-1: all) uses out of {@code size} */
+    public static int pairsUsed(int nToAlign, int size) {
+        return nToAlign < 0 ? size : Math.min(nToAlign, size);
+    }
+
+    /** @return whether the model's fit starts from the centroids of the positions it is fitted on */
+    public static boolean usesCentroids(AlignmentModel model) {
+        return model != AlignmentModel.NONE && model != AlignmentModel.ORIGIN;
+    }
+
+    /**
+     * As {@link #fit(AlignmentModel, PosePairs, int, String)}, with the centroids (m) of the first
+     * {@link #pairsUsed} estimate and reference positions computed beforehand (e.g. on two
+     * threads) by {@link PositionColumns#centroid}, the fit's own sums: the same bits. Either may
+     * be null (then the fit computes it); models that need none ignore them.
+     */
+    public static AlignmentTransform fit(AlignmentModel model, PosePairs pairs, int nToAlign, String source,
+            double[] meanEst, double[] meanRef) {
+        int n = pairsUsed(nToAlign, pairs.size());
         return switch (model) {
             case NONE -> AlignmentTransform.identity(0);
             case ORIGIN -> origin(pairs);
-            case SE2, SIM2, POSYAW -> planar(model, pairs.reference(), pairs.estimate(), n, source);
-            case SE3, SIM3 -> spatial(model, pairs.reference(), pairs.estimate(), n, source);
+            case SE2, SIM2, POSYAW -> planar(model, pairs.reference(), pairs.estimate(), n, source, meanEst, meanRef);
+            case SE3, SIM3 -> spatial(model, pairs.reference(), pairs.estimate(), n, source, meanEst, meanRef);
         };
     }
 
@@ -74,13 +95,13 @@ public final class Alignment {
      * mu_g - s R mu_e in xy, and for posyaw also in z (se2/sim2 leave z alone).
      */
     private static AlignmentTransform planar(AlignmentModel model, PositionColumns ref, PositionColumns est, int n,
-            String source) {
+            String source, double[] meanEst, double[] meanRef) {
         if (n < 2) {
             throw new InputException(source, 0, null, InputProblem.TOO_FEW_POSES,
                     model.name().toLowerCase() + " alignment needs at least 2 associated poses, got " + n, null);
         }
-        double[] me = est.centroid(n);
-        double[] mg = ref.centroid(n);
+        double[] me = meanEst != null ? meanEst : est.centroid(n);
+        double[] mg = meanRef != null ? meanRef : ref.centroid(n);
         double mex = me[0];
         double mey = me[1];
         double mgx = mg[0];
@@ -129,12 +150,13 @@ public final class Alignment {
     }
 
     private static AlignmentTransform spatial(AlignmentModel model, PositionColumns ref, PositionColumns est, int n,
-            String source) {
+            String source, double[] meanEst, double[] meanRef) {
         if (n < 3) {
             throw new InputException(source, 0, null, InputProblem.TOO_FEW_POSES,
                     model.name().toLowerCase() + " alignment needs at least 3 associated poses, got " + n, null);
         }
-        double[][] fit = Umeyama.fit(est, ref, n, model == AlignmentModel.SIM3);
+        double[][] fit = Umeyama.fit(est, ref, n, model == AlignmentModel.SIM3,
+                meanEst != null ? meanEst : est.centroid(n), meanRef != null ? meanRef : ref.centroid(n));
         if (fit == null || !(fit[2][0] > 0.0)) {
             throw new InputException(source, 0, null, InputProblem.DEGENERATE_ALIGNMENT,
                     model.name().toLowerCase() + " alignment is not determined: the covariance of the " + n

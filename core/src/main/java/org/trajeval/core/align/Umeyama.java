@@ -21,11 +21,11 @@ final class Umeyama {
     /**
      * @param x source points (estimate), the first n read
      * @param y target points (reference)
+     * @param mx mu_x, the centroid of the first n source points ({@link PositionColumns#centroid}, m)
+     * @param my mu_y, the centroid of the first n target points (m)
      * @return {R (9, row-major), t (3), {c}} or {@code null} when the covariance has rank < 2
      */
-    static double[][] fit(PositionColumns x, PositionColumns y, int n, boolean withScale) {
-        double[] mx = x.centroid(n);
-        double[] my = y.centroid(n);
+    static double[][] fit(PositionColumns x, PositionColumns y, int n, boolean withScale, double[] mx, double[] my) {
         double sigmaX = 0;
         double[] cov = new double[9];
         for (int i = 0; i < n; i++) {

@@ -114,46 +114,26 @@ public final class TimeAssociation {
      */
     public static NearestPairs nearestPairs(Trajectory ref, Trajectory est, AssociationOptions o,
             String referenceName, String estimateName) {
+        return nearestPairs(ref, est, o, referenceName, estimateName, IndexTasks.SERIAL);
+    }
+
+    /**
+     * As {@link #nearestPairs(Trajectory, Trajectory, AssociationOptions, String, String)}, with
+     * the independent chunks of the search handed to {@code tasks} (which may run them on several
+     * threads): the same pairs.
+     *
+     * @param tasks runs the chunks of the search
+     */
+    public static NearestPairs nearestPairs(Trajectory ref, Trajectory est, AssociationOptions o,
+            String referenceName, String estimateName, IndexTasks tasks) {
         boolean estLonger = est.size() > ref.size();
         Trajectory shortTraj = estLonger ? ref : est;
         Trajectory longTraj = estLonger ? est : ref;
         double offsetLong = estLonger ? o.tOffsetS() : -o.tOffsetS();
         int ns = shortTraj.size();
-        int nl = longTraj.size();
-        double[] longStamps = new double[nl];
-        for (int i = 0; i < nl; i++) {
-            longStamps[i] = longTraj.t(i) + offsetLong;
-        }
-        double maxDiff = o.maxDiffS();
         int[] idxShort = new int[ns];
         int[] idxLong = new int[ns];
-        int count = 0;
-        int hint = 0;
-        for (int i = 0; i < ns; i++) {
-            double s = shortTraj.t(i);
-            if (s < longStamps[0] - maxDiff || s > longStamps[nl - 1] + maxDiff) {
-                continue;
-            }
-            // first index with longStamps[k] > s (searchsorted side=right); stamps of the short
-            // trajectory increase, so the search can start at the previous answer
-            int k = upperBound(longStamps, s, hint);
-            hint = k;
-            if (k >= nl) {
-                k = nl - 1;
-            }
-            double diffUb = longStamps[k] - s;
-            double diffLb = k > 0 ? s - longStamps[k - 1] : Double.POSITIVE_INFINITY;
-            int best;
-            if (diffUb <= maxDiff && diffUb < diffLb) {
-                best = k;
-            } else if (diffLb <= maxDiff && diffLb <= diffUb) {
-                best = k - 1;
-            } else {
-                continue;
-            }
-            idxShort[count] = i;
-            idxLong[count++] = best;
-        }
+        int count = NearestMatching.match(shortTraj, longTraj, offsetLong, o.maxDiffS(), idxShort, idxLong, tasks);
         if (count == 0) {
             throw noOverlap(ref, est, o, referenceName, estimateName);
         }
@@ -228,21 +208,6 @@ public final class TimeAssociation {
             }
         }
         return distinct;
-    }
-
-    /** First index k >= from with a[k] > v, or a.length. */
-    private static int upperBound(double[] a, double v, int from) {
-        int lo = from;
-        int hi = a.length;
-        while (lo < hi) {
-            int mid = (lo + hi) >>> 1;
-            if (a[mid] > v) {
-                hi = mid;
-            } else {
-                lo = mid + 1;
-            }
-        }
-        return lo;
     }
 
     /** Indices of the reference poses bracketing [tFirst, tLast]. */

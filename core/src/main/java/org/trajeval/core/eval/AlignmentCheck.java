@@ -47,6 +47,18 @@ final class AlignmentCheck {
      */
     static List<Warning> check(AlignmentTransform tf, PositionColumns ref, PositionColumns est, int size,
             boolean planarData) {
+        return check(tf, ref, est, size, planarData, null);
+    }
+
+    /**
+     * As {@link #check(AlignmentTransform, PositionColumns, PositionColumns, int, boolean)}, with
+     * the reference's principal spreads computed beforehand (e.g. beside the fit, on another thread).
+     *
+     * @param refSpreads {@link #principalSpreads} of the first min(tf.posesUsed(), size) reference
+     *     positions, or null to compute them here when {@link #needsSpreads} says so
+     */
+    static List<Warning> check(AlignmentTransform tf, PositionColumns ref, PositionColumns est, int size,
+            boolean planarData, double[] refSpreads) {
         List<Warning> out = new ArrayList<>();
         AlignmentModel m = tf.model();
         boolean spatialModel = m == AlignmentModel.SE3 || m == AlignmentModel.SIM3;
@@ -57,8 +69,8 @@ final class AlignmentCheck {
                     + "estimate is scored as its mirror image; use --align se2 (or posyaw) for planar data", name(m),
                     tf.rotation()[8])));
         }
-        if (spatialModel && n >= 2) {
-            double[] sd = principalSpreads(ref, n);
+        if (needsSpreads(m, n)) {
+            double[] sd = refSpreads != null ? refSpreads : principalSpreads(ref, n);
             if (sd[1] <= COLLINEAR_RATIO * sd[0]) {
                 out.add(new Warning(UNOBSERVABLE, String.format(Locale.ROOT, "the %d positions the %s alignment is "
                         + "fitted on lie on a line (spread %.3g m across it, %.3g m along it): the rotation about "
@@ -71,6 +83,11 @@ final class AlignmentCheck {
             out.add(s);
         }
         return out;
+    }
+
+    /** @return whether the check of a fit of this model on n poses needs the reference's principal spreads */
+    static boolean needsSpreads(AlignmentModel model, int n) {
+        return (model == AlignmentModel.SE3 || model == AlignmentModel.SIM3) && n >= 2;
     }
 
     /** @return the scale warning of a sim fit, or {@code null} */
@@ -115,7 +132,11 @@ final class AlignmentCheck {
      *     O. K. Smith, Comm. ACM 4(4), 1961)
      */
     static double[] principalSpreads(PositionColumns p, int n) {
-        double[] m = p.centroid(n);
+        return principalSpreads(p, n, p.centroid(n));
+    }
+
+    /** As {@link #principalSpreads(PositionColumns, int)}, given {@code p.centroid(n)} (m). */
+    static double[] principalSpreads(PositionColumns p, int n, double[] m) {
         double mx = m[0];
         double my = m[1];
         double mz = m[2];

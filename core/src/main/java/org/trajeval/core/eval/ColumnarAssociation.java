@@ -48,34 +48,44 @@ record ColumnarAssociation(AssociatedColumns pairs, int dropped, int droppedRefe
         while (spanHi - 1 > spanLo && ref.t(spanHi - 1) >= est.t(k1 - 1) + off) {
             spanHi--;
         }
-        double[] sampling = referenceSampling(ref, spanLo, spanHi, par);
+        // the reference's sampling (one thread) beside the allocation of the interpolated columns and
+        // the pairs' cache (zeroed, i.e. page faults: 28 B per pose for SE(3) data)
+        int lo = spanLo;
+        int hi = spanHi;
+        int first = k0;
+        double[][] sampling = new double[1][];
+        InterpolatedReference[] interp = new InterpolatedReference[1];
+        AssociatedColumns[] pairs = new AssociatedColumns[1];
+        par.all(() -> sampling[0] = referenceSampling(ref, lo, hi, Parallelism.SEQUENTIAL), () -> {
+            interp[0] = planar ? InterpolatedReference.planar((PlanarTrajectory) ref, m)
+                    : InterpolatedReference.spatial((SpatialTrajectory) ref, m);
+            pairs[0] = AssociatedColumns.interpolated(ref, est, interp[0], first, m, off);
+        });
         double limit = o.maxGap().limitS(ref);
-        if (sampling[0] > limit) {
+        if (sampling[0][0] > limit) {
             return null; // a reference gap longer than the limit: the general path drops and counts
         }
-        InterpolatedReference interp = planar ? InterpolatedReference.planar((PlanarTrajectory) ref, m)
-                : InterpolatedReference.spatial((SpatialTrajectory) ref, m);
-        int first = k0;
-        par.forEachChunk(m, (c, from, to) -> interp.fill(k -> est.t(first + k) + off, from, to));
-        return new ColumnarAssociation(AssociatedColumns.interpolated(ref, est, interp, k0, m, off), ne - m, 0,
-                sampling[0], sampling[1], limit);
+        par.forEachChunk(m, (c, from, to) -> interp[0].fill(k -> est.t(first + k) + off, from, to));
+        return new ColumnarAssociation(pairs[0], ne - m, 0, sampling[0][0], sampling[0][1], limit);
     }
 
-    /** evo's nearest matching, as index maps. */
+    /** evo's nearest matching, as index maps; the search, the counts and the sampling spread over {@code par}. */
     static ColumnarAssociation nearest(Trajectory ref, Trajectory est, EvaluationOptions o, String refName,
-            String estName) {
+            String estName, Parallelism par) {
         TimeAssociation.NearestPairs np = TimeAssociation.nearestPairs(ref, est, new AssociationOptions(
-                o.association(), o.maxDiffS(), o.tOffsetS(), o.overlap(), o.maxGap()), refName, estName);
+                o.association(), o.maxDiffS(), o.tOffsetS(), o.overlap(), o.maxGap()), refName, estName, par);
         int m = np.count();
         if (m < 2) {
             return null;
         }
         int first = np.reference()[0];
         int last = np.reference()[m - 1];
+        int[] distinct = new int[2];
+        par.all(() -> distinct[0] = np.distinctEstimate(), () -> distinct[1] = np.distinctReference());
+        double[] sampling = referenceSampling(ref, first, last, par);
         return new ColumnarAssociation(
                 AssociatedColumns.matched(ref, est, np.reference(), np.estimate(), m, o.tOffsetS()),
-                est.size() - np.distinctEstimate(), ref.size() - np.distinctReference(),
-                ReferenceSampling.maxGap(ref, first, last), ReferenceSampling.maxAcceleration(ref, first, last),
+                est.size() - distinct[0], ref.size() - distinct[1], sampling[0], sampling[1],
                 Double.POSITIVE_INFINITY);
     }
 

@@ -1,7 +1,6 @@
 package org.trajeval.core.eval;
 
 import java.util.List;
-import org.trajeval.core.align.Alignment;
 import org.trajeval.core.align.AlignmentTransform;
 import org.trajeval.core.assoc.AssociationMethod;
 import org.trajeval.core.io.LoadedTrajectory;
@@ -57,36 +56,43 @@ final class ColumnarEvaluator {
         }
         ColumnarAssociation a = o.association() == AssociationMethod.INTERPOLATE
                 ? ColumnarAssociation.interpolate(ref, est, o, planar, par)
-                : ColumnarAssociation.nearest(ref, est, o, refName, estName);
+                : ColumnarAssociation.nearest(ref, est, o, refName, estName, par);
         if (a == null) {
             return null;
         }
         AssociatedColumns pairs = a.pairs();
         int m = pairs.size();
-        AlignmentTransform tf = Alignment.fit(o.alignment(), pairs, o.nToAlign(), estName);
-        List<EvaluationReport.Warning> warnings = AlignmentCheck.check(tf, pairs.reference(), pairs.estimate(), m,
-                planar);
+        // the error arrays are allocated (zeroed: page faults) beside the fit's covariance pass
+        double[][] errors = new double[2][];
+        ColumnarAlignment fit = ColumnarAlignment.fit(pairs, o, planar, estName, par, () -> {
+            errors[0] = new double[m];
+            errors[1] = new double[m];
+        });
+        AlignmentTransform tf = fit.transform();
         pairs.align(tf);
 
         // ---- errors and statistics: each RPE pair and each ATE pose computed once, translation
-        // into one array and rotation into another; the ATE reuses the arrays of the RPE
+        // into one array and rotation into another; the ATE reuses the arrays of the RPE. Each
+        // statistic is one serial pass over its own array: two of them (and the coverage) run side by side
         PairRule rule = PairRule.of(pairs, o, par);
-        double[] trans = new double[m];
-        double[] rot = new double[m];
+        double[] trans = errors[0];
+        double[] rot = errors[1];
         rule.errorsInto(trans, rot);
         int count = rule.pairs();
-        ErrorStatistics rpeTrans = ErrorStatistics.ofInPlace(trans, count);
-        ErrorStatistics rpeRot = ErrorStatistics.ofInPlace(rot, count);
+        ErrorStatistics[] stats = new ErrorStatistics[4];
+        Coverage[] coverage = new Coverage[1];
+        Trajectory r = ref;
+        par.all(() -> stats[2] = ErrorStatistics.ofInPlace(trans, count),
+                () -> stats[3] = ErrorStatistics.ofInPlace(rot, count),
+                () -> coverage[0] = Coverage.compute(pairs::stamp, m, r.t(0), r.t(r.size() - 1)));
         par.forEachChunk(m, (c, from, to) -> {
             pairs.ateInto(from, to, trans, rot, new AssociatedColumns.Scratch());
         });
-        ErrorStatistics ateTrans = ErrorStatistics.ofInPlace(trans, m);
-        ErrorStatistics ateRot = ErrorStatistics.ofInPlace(rot, m);
-        Coverage coverage = Coverage.compute(pairs::stamp, m, ref.t(0), ref.t(ref.size() - 1));
+        par.all(() -> stats[0] = ErrorStatistics.ofInPlace(trans, m), () -> stats[1] = ErrorStatistics.ofInPlace(rot, m));
         return new ReportParts(m, a.dropped(), a.droppedReference(), a.maxGapS(), a.aMaxMps2(), a.gapLimitS(), tf,
-                warnings, ateTrans, ateRot, rpeTrans, rpeRot, count,
+                fit.warnings(), stats[0], stats[1], stats[2], stats[3], count,
                 count == 0 ? Double.NaN : rule.sumS() / count, count == 0 ? Double.NaN : rule.sumM() / count,
-                coverage);
+                coverage[0]);
     }
 
     /** What the evaluator computed; {@link Evaluator} turns it into the report. */

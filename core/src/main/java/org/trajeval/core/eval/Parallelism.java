@@ -6,6 +6,7 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
+import org.trajeval.core.assoc.IndexTasks;
 
 /**
  * How many threads an evaluation may use, and the executor that lends the extra ones (the
@@ -16,7 +17,7 @@ import java.util.concurrent.atomic.AtomicInteger;
  * @param executor runs the {@code threads - 1} helper tasks; unused (may be null) when threads is 1
  * @param threads threads working at once, the caller's included (at least 1)
  */
-public record Parallelism(ExecutorService executor, int threads) {
+public record Parallelism(ExecutorService executor, int threads) implements IndexTasks {
     /** Indices per chunk. */
     static final int CHUNK = 1 << 16;
 
@@ -50,10 +51,20 @@ public record Parallelism(ExecutorService executor, int threads) {
     }
 
     /**
+     * Runs every task once, on up to {@link #threads()} threads; returns when all are done (one
+     * thread: in the order given). For independent passes that each keep their own order of
+     * operations, e.g. two sums over different arrays: each gives the same bits wherever it runs.
+     */
+    void all(Runnable... tasks) {
+        forEach(tasks.length, c -> tasks[c].run());
+    }
+
+    /**
      * Runs {@code task} for every index in [0, tasks), on up to {@link #threads()} threads (the
      * caller's included), each index once, in no fixed order; returns when all are done. The first
      * exception of a task is rethrown after every thread has stopped.
      */
+    @Override
     public void forEach(int tasks, java.util.function.IntConsumer task) {
         if (threads == 1 || tasks < 2) {
             for (int c = 0; c < tasks; c++) {

@@ -195,7 +195,7 @@ class ColumnarEvaluatorTest {
      * with drift, position noise, a noisy orientation (small random rotation, quaternion not
      * normalised) and the time warp of {@link #warped}.
      */
-    private static SpatialTrajectory warped3(SpatialTrajectory truth, Random rnd) {
+    static SpatialTrajectory warped3(SpatialTrajectory truth, Random rnd) {
         int n = truth.size();
         double[] t = new double[n];
         double[] x = new double[n];
