@@ -28,7 +28,8 @@ class PlainRunYamlTest {
         "-0", "2.10", "12:30", "2026-11-25", "a b", "'quoted'", "\"quoted\"", "a#b", "a #c", "[1, 2]", "{a: 1}",
         "&anchor", "*alias", "!tag x", "|", ">", "%x", "@x", "`x", "a: b", "a\r", "", " lead", "trail "};
     private static final String[] KEYS = {"run_id", "robot_id", "sequence", "method", "seed", "reference",
-        "estimate", "site", "software_version", "plot", "x1", "Upper", "1key", "with space", "", "_"};
+        "estimate", "site", "software_version", "plot", "x1", "Upper", "1key", "with space", "", "_", "on", "yes", "null",
+        "y", "true", "no_"};
 
     @Test
     void theBenchmarkAndFixtureManifestsAreTakenWithTheMappersTree() throws Exception {
