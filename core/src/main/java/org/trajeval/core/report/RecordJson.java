@@ -36,7 +36,8 @@ import java.util.Map;
  * <li>{@code double} and {@code Double}: a number, or null when not finite (ReportJson's rule);
  *     {@code double[]} elements as Jackson's array serializer writes them;</li>
  * <li>values: String, int, long, boolean (and their boxes), double[], double[][], a List of
- *     supported values, a supported record.</li>
+ *     supported values, a Map of String keys to supported values (an object, entries in the map's
+ *     order, null values written as null), a supported record.</li>
  * </ul>
  * Any other type, annotation or an auto-detected getter makes {@link #supports} false, and
  * ReportJson uses the mapper. {@code RecordJsonTest} checks the output against the mapper's.
@@ -154,7 +155,9 @@ final class RecordJson {
 
     private static boolean supportsValue(Type t, List<Class<?>> seen) {
         if (t instanceof ParameterizedType p) {
-            return p.getRawType() == List.class && supportsValue(p.getActualTypeArguments()[0], seen);
+            Type[] args = p.getActualTypeArguments();
+            return p.getRawType() == List.class && supportsValue(args[0], seen)
+                    || p.getRawType() == Map.class && args[0] == String.class && supportsValue(args[1], seen);
         }
         if (!(t instanceof Class<?> c)) {
             return false;
@@ -241,6 +244,13 @@ final class RecordJson {
                 writeValue(g, row);
             }
             g.writeEndArray();
+        } else if (v instanceof Map<?, ?> map) {
+            g.writeStartObject(map);
+            for (Map.Entry<?, ?> e : map.entrySet()) {
+                g.writeFieldName((String) e.getKey());
+                writeValue(g, e.getValue());
+            }
+            g.writeEndObject();
         } else if (v instanceof List<?> list) {
             g.writeStartArray(list, list.size());
             for (Object e : list) {

@@ -99,13 +99,34 @@ class RecordJsonTest {
     }
 
     @JsonPropertyOrder({"a"})
-    public record OtherValue(@JsonProperty("a") java.util.Map<String, Integer> a) {
+    public record OtherValue(@JsonProperty("a") java.util.Set<String> a) {
+    }
+
+    @JsonPropertyOrder({"a"})
+    public record NumberKeys(@JsonProperty("a") java.util.Map<Integer, String> a) {
+    }
+
+    @Test
+    void mapsOfTextKeysAreWrittenAsTheMapperWritesThem() {
+        // the pipeline report's tags (text) and factors (numbers) in insertion and sorted order, an empty map,
+        // a null entry, non-finite numbers (null, ReportJson's rule) and a map left out under NON_NULL
+        java.util.Map<String, String> tags = new java.util.LinkedHashMap<>();
+        tags.put("z", "last \"q\"");
+        tags.put("a", null);
+        tags.put("m\u00e9", "");
+        java.util.Map<String, Double> factors = new java.util.TreeMap<>(java.util.Map.of("b", 0.1 + 0.2, "a", -0.0,
+                "c", Double.NaN, "d", Double.NEGATIVE_INFINITY, "e", 1e300));
+        for (MapsRecord r : List.of(new MapsRecord(tags, factors, java.util.Map.of(), java.util.Map.of("k", List.of(1L, 2L))),
+                new MapsRecord(null, new java.util.TreeMap<>(java.util.Map.of("x", 4.0)), null, null))) {
+            assertTrue(RecordJson.supports(r.getClass()));
+            assertWrittenAsTheMapperWrites(r);
+        }
     }
 
     @Test
     void typesOutsideItsRulesGoToTheMapper() {
         for (Object o : new Object[] {new WithGetter(1), new PartialOrder(1, 2), new NoOrder(1),
-            new OtherValue(java.util.Map.of("x", 1)), List.of(1)}) {
+            new OtherValue(java.util.Set.of("x")), new NumberKeys(java.util.Map.of(1, "x")), List.of(1)}) {
             assertFalse(RecordJson.supports(o.getClass()), o.getClass().getName());
             assertEquals(ReportJson.mapperJson(o), ReportJson.toJson(o));
         }

@@ -76,8 +76,7 @@ public final class RunFields {
      */
     public static RunMetadata metadata(JsonNode root, String source) {
         try {
-            @SuppressWarnings("unchecked")
-            Map<String, Object> tree = root.isObject() ? TREE.convertValue(root, Map.class) : Map.of();
+            Map<String, Object> tree = describes(root) ? asMap(root) : Map.of();
             return new RunMetadata(text(root, "run_id", source, true), text(root, "robot_id", source, false),
                     text(root, "sequence", source, false), text(root, "method", source, false), seed(root, source),
                     labels(root, source), org.trajeval.core.options.RunMetadata.parse(tree, "", source),
@@ -85,6 +84,37 @@ public final class RunFields {
         } catch (InputException e) {
             throw new InputException(source, 0, e.column(), e.problem(), e.detail(), e.found(), e);
         }
+    }
+
+    /** The keys {@link #metadata} reads through the data-binding tree: the run's description and resources. */
+    private static final Set<String> DESCRIPTION_KEYS = descriptionKeys();
+
+    private static Set<String> descriptionKeys() {
+        Set<String> keys = new java.util.HashSet<>(org.trajeval.core.options.RunField.keys());
+        keys.add("resources");
+        return Set.copyOf(keys);
+    }
+
+    /**
+     * @return whether {@code root} holds a key of the run's description or resources; without one, the
+     *     description and resources parse from an empty mapping exactly as from the whole tree (they read
+     *     only those keys), so most runs skip the tree's conversion to a map
+     */
+    private static boolean describes(JsonNode root) {
+        if (!root.isObject()) {
+            return false;
+        }
+        for (Iterator<String> it = root.fieldNames(); it.hasNext(); ) {
+            if (DESCRIPTION_KEYS.contains(it.next())) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    @SuppressWarnings("unchecked")
+    private static Map<String, Object> asMap(JsonNode node) {
+        return TREE.convertValue(node, Map.class);
     }
 
     /** @return site, software_version and tags (a mapping of single values) */
@@ -167,9 +197,7 @@ public final class RunFields {
             throw new InputException(source, 0, "metrics", InputProblem.INVALID_CONFIGURATION,
                     "metrics must be a mapping of settings", m.toString());
         }
-        @SuppressWarnings("unchecked")
-        Map<String, Object> tree = TREE.convertValue(m, Map.class);
-        return SettingValues.of(SettingsTree.flatten(tree, "metrics", source), source);
+        return SettingValues.of(SettingsTree.flatten(asMap(m), "metrics", source), source);
     }
 
     /**

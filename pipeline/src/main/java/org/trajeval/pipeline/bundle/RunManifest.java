@@ -57,7 +57,9 @@ public record RunManifest(RunMetadata metadata, String reference, String estimat
         SafePaths.requireRegularFile(file, source, FILE_NAME, FILE_NAME, maxBytes);
         JsonNode root;
         try {
-            root = YAML.readTree(org.trajeval.core.io.TextFiles.readUtf8(file, FILE_NAME, maxBytes));
+            String text = org.trajeval.core.io.TextFiles.readUtf8(file, FILE_NAME, maxBytes);
+            JsonNode plain = PlainRunYaml.read(text);
+            root = plain != null ? plain : YAML.readTree(text);
         } catch (JsonProcessingException e) {
             JsonLocation loc = e.getLocation();
             throw new InputException(source, loc == null ? 0 : Math.max(0, loc.getLineNr()), null,

@@ -59,6 +59,7 @@ public final class DirectoryService {
     private final Clock clock;
     private final IncomingScanner scanner;
     private final Semaphore permits;
+    private final ClaimNames claimNames = new ClaimNames();
     private final int maxPermits;
     private final AtomicLong reported = new AtomicLong();
     private final AtomicLong duplicates = new AtomicLong();
@@ -260,7 +261,7 @@ public final class DirectoryService {
                 }
                 Slot slot;
                 try {
-                    slot = Slot.claim(layout.incoming(), layout.processing(), unit);
+                    slot = Slot.claim(layout.incoming(), layout.processing(), unit, claimNames);
                 } catch (IOException e) {
                     environmentFailure = new EnvironmentException("claim into", layout.processing().resolve(
                             unit.slotName()), e);

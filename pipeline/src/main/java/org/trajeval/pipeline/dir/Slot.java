@@ -13,7 +13,6 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
-import java.util.UUID;
 import org.trajeval.pipeline.EnvironmentException;
 
 /**
@@ -50,10 +49,12 @@ final class Slot implements AutoCloseable {
      * Claims a bundle: prepares a locked folder, renames it to processing/SLOT (fails if the
      * slot exists: someone else has the bundle), then moves the payload and the marker in.
      *
+     * @param names the names of the prepared folders ({@code .claim-NAME}), unique among processes
+     *
      * @return the slot, or {@code null} when another worker got the bundle first
      */
-    static Slot claim(Path incoming, Path processing, BundleUnit unit) throws IOException {
-        Path tmp = processing.resolve(CLAIMING + UUID.randomUUID());
+    static Slot claim(Path incoming, Path processing, BundleUnit unit, ClaimNames names) throws IOException {
+        Path tmp = processing.resolve(CLAIMING + names.next());
         Files.createDirectory(tmp);
         FileChannel ch = FileChannel.open(tmp.resolve(LOCK), StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
         FileLock lock = ch.lock();

@@ -86,4 +86,35 @@ class RunDescriptionTest {
             assertEquals(c[1], e.column(), e.getMessage());
         }
     }
+
+    @Test
+    void eachDescriptionFieldAloneIsReadAndNoneGivesNoDescription() throws Exception {
+        // RunFields converts the tree for the description only when one of its keys is present: every key
+        // must still be seen on its own (one case per RunField key and resources), and a run.yaml without
+        // any must give the same empty description and no resources as before
+        Path file = root.resolve("run.yaml");
+        Map<String, String> alone = new java.util.LinkedHashMap<>();
+        alone.put("domain", "domain: real\n");
+        alone.put("simulator", "domain: sim\nsimulator: gazebo\n");
+        alone.put("scenario", "scenario: c1\n");
+        alone.put("factors", "factors: {obstacle_density: 0.4}\n");
+        alone.put("environment", "environment: warehouse\n");
+        alone.put("modality", "modality: [lidar, wheel]\n");
+        alone.put("ground_truth", "ground_truth: simulator\n");
+        assertEquals(new java.util.TreeSet<>(org.trajeval.core.options.RunField.keys()),
+                new java.util.TreeSet<>(alone.keySet()), "one case per description key");
+        for (Map.Entry<String, String> c : alone.entrySet()) {
+            Files.writeString(file, Fixtures.manifest("r1", "bot-1", "gt.csv", "est.csv") + c.getValue());
+            org.trajeval.core.options.RunMetadata about = RunManifest.read(file, "b/run.yaml", 1 << 20).metadata()
+                    .about();
+            assertTrue(!about.equals(org.trajeval.core.options.RunMetadata.NONE), c.getKey());
+        }
+        Files.writeString(file, Fixtures.manifest("r1", "bot-1", "gt.csv", "est.csv")
+                + "resources: {wall_time_s: 2.5, peak_memory_mib: 64}\n");
+        assertEquals(2.5, RunManifest.read(file, "b/run.yaml", 1 << 20).metadata().resources().wallTimeS(), 0.0);
+        Files.writeString(file, Fixtures.manifest("r1", "bot-1", "gt.csv", "est.csv") + "site: lab\n");
+        org.trajeval.pipeline.RunMetadata plain = RunManifest.read(file, "b/run.yaml", 1 << 20).metadata();
+        assertEquals(org.trajeval.core.options.RunMetadata.NONE, plain.about());
+        assertEquals(null, plain.resources());
+    }
 }
