@@ -79,7 +79,7 @@ public final class PipelineMetrics {
         return new PipelineMetrics(r, r);
     }
 
-    /** @return metrics kept in memory only (tests) */
+    /** @return metrics kept in memory only (tests, and a service whose metrics no endpoint serves) */
     public static PipelineMetrics inMemory() {
         return new PipelineMetrics(new SimpleMeterRegistry(), null);
     }
