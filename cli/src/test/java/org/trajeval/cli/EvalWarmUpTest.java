@@ -69,7 +69,9 @@ class EvalWarmUpTest {
     @Test
     void noWarmUpForOtherCommandsAnEvalWithoutFilesOrOneThread() {
         for (String[] args : new String[][] {{"--version"}, {"suite", "run", "x.yaml"}, {"eval"},
-            {"eval", "a.csv", "b.csv", "--threads", "1"}, {"eval", "a.csv", "b.csv", "--threads=1"}}) {
+            {"eval", "a.csv", "b.csv", "--threads", "1"}, {"eval", "a.csv", "b.csv", "--threads=1"},
+            {"eval", "a.tum", "b.tum"}, {"eval", "a.tum", "b.tum", "--convention", "lesson"},
+            {"eval", "a.tum", "b.tum", "--convention=kitti"}}) {
             EvalWarmUp.startFor(args);
             assertFalse(EvalWarmUp.pending(), String.join(" ", args));
         }
@@ -83,5 +85,11 @@ class EvalWarmUpTest {
         assertTrue(EvalWarmUp.pending());
         EvalWarmUp.awaitStarted();
         assertFalse(EvalWarmUp.pending());
+        for (String[] args : new String[][] {{"eval", "a.tum", "b.tum", "--convention", "evo"},
+            {"eval", "a.tum", "b.tum", "--convention=evo", "--align", "sim3"}}) {
+            EvalWarmUp.startFor(args);
+            assertTrue(EvalWarmUp.pending(), String.join(" ", args));
+            EvalWarmUp.awaitStarted();
+        }
     }
 }
