@@ -44,11 +44,11 @@ final class EvalWarmUp {
      */
     static void startFor(String[] args) {
         if (args.length < 2 || !args[0].equals("eval") || Runtime.getRuntime().availableProcessors() < 2
-                || oneThread(args)) {
+                || gives(args, "--threads", "1")) {
             return;
         }
         boolean planar = args[1].toLowerCase(java.util.Locale.ROOT).endsWith(".csv");
-        if (!planar && !evoConvention(args)) {
+        if (!planar && !gives(args, "--convention", "evo")) {
             // the 3D warm-up trains evo's path (nearest matching, SE(3)); for another convention it
             // cost a 10^6-pose lesson pair on two threads 0.2-0.3 s of CPU and gained nothing
             return;
@@ -65,20 +65,11 @@ final class EvalWarmUp {
         t.start();
     }
 
-    private static boolean evoConvention(String[] args) {
+    /** @return whether {@code args} give {@code option} the value {@code value}, as "OPTION VALUE" or "OPTION=VALUE" */
+    private static boolean gives(String[] args, String option, String value) {
         for (int i = 1; i < args.length; i++) {
-            if (args[i].equals("--convention=evo") || args[i].equals("--convention") && i + 1 < args.length
-                    && args[i + 1].equals("evo")) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    private static boolean oneThread(String[] args) {
-        for (int i = 1; i < args.length; i++) {
-            if (args[i].equals("--threads=1") || args[i].equals("--threads") && i + 1 < args.length
-                    && args[i + 1].equals("1")) {
+            if (args[i].equals(option + "=" + value) || args[i].equals(option) && i + 1 < args.length
+                    && args[i + 1].equals(value)) {
                 return true;
             }
         }
