@@ -10,7 +10,7 @@ import java.util.Set;
 
 /**
  * The plainest run.yaml, read without a YAML parser: every line {@code key: value}, the key lower-case
- * letters, digits and '_', the value either a word (a letter, then letters, digits, '_', '.', '-', '/';
+ * letters, digits and '_' (at most 64 of them), the value either a word (a letter, then letters, digits, '_', '.', '-', '/';
  * not a YAML boolean or null such as {@code yes}, {@code off}, {@code null}) or a whole number without
  * sign, leading zero or separator (at most 18 digits). For such a file the tree is the one the YAML
  * mapper gives (text, int or long nodes, keys in file order); anything else (comments, quotes, nested
@@ -23,6 +23,12 @@ final class PlainRunYaml {
     private static final Set<String> NOT_TEXT = Set.of("true", "false", "yes", "no", "y", "n", "on", "off", "null");
     /** Digits of the longest number read here (a long, as the YAML mapper reads up to 18 digits). */
     private static final int MAX_DIGITS = 18;
+    /**
+     * Longest key read here (characters). YAML takes a key without '?' only up to 1024 characters: past that
+     * the YAML mapper reads the line as one text or refuses the file, so a long key is left to it (the
+     * longest key a run.yaml knows has 16).
+     */
+    private static final int MAX_KEY_CHARS = 64;
 
     private PlainRunYaml() {
     }
@@ -60,6 +66,9 @@ final class PlainRunYaml {
     }
 
     private static boolean isKey(String s, int from, int to) {
+        if (to - from > MAX_KEY_CHARS) {
+            return false;
+        }
         for (int i = from; i < to; i++) {
             char c = s.charAt(i);
             if (!(c >= 'a' && c <= 'z' || c == '_' || i > from && c >= '0' && c <= '9')) {

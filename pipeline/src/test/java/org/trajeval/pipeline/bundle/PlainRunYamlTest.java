@@ -91,6 +91,46 @@ class PlainRunYamlTest {
         }
     }
 
+    @Test
+    void seededCharacterSoupIsTheMappersOrLeftToIt() {
+        // documents made character by character, with YAML's other line breaks (NEL, U+2028, U+2029), a BOM,
+        // a no-break space, tabs, CR and indicator characters: whatever the plain reader takes, the mapper
+        // reads the same
+        String[] parts = {"a", "z", "k", "_", "0", "1", "9", ":", " ", "\n", "\n", "\r", "\t", "#", "'", "\"", "-",
+            ".", "/", "Y", "e", "N", "\u0085", "\u2028", "\u2029", "\uFEFF", "\u00e9", "\u00a0", "x: ", "run_id: ",
+            ": ", ": ", "y", "o", "n", "f", "t", "---", "...", "%", "!", "&", "*", "|", ">", "[", "{", "?", "~", "+",
+            "0x"};
+        Random rnd = new Random(20261126L);
+        int taken = 0;
+        for (int i = 0; i < 300_000; i++) {
+            StringBuilder b = new StringBuilder();
+            for (int j = 1 + rnd.nextInt(20); j > 0; j--) {
+                b.append(parts[rnd.nextInt(parts.length)]);
+            }
+            taken += compare(b.toString()) ? 1 : 0;
+        }
+        assertEquals(true, taken > 50, "taken: " + taken);
+    }
+
+    @Test
+    void aKeyPastYamlsLimitForASimpleKeyIsLeftToTheMapper() throws Exception {
+        // YAML reads 'key: value' as a mapping only while the key has at most 1024 characters: a longer one made
+        // the mapper give one text (first line) or refuse the file (later line), where the plain reader took it as
+        // a key, so the run failed with "unknown key" instead of the mapper's message (found by rt9)
+        for (int n : new int[] {1, 64, 65, 1024, 1025, 1100, 5000}) {
+            for (String before : new String[] {"", "run_id: r1\n"}) {
+                String text = before + "k".repeat(n) + ": v\n";
+                try {
+                    YAML.readTree(text);
+                } catch (Exception refused) {
+                    assertNull(PlainRunYaml.read(text), "the mapper refuses a key of " + n + " characters");
+                    continue;
+                }
+                compare(text);
+            }
+        }
+    }
+
     /** @return whether the plain reader took {@code text}; when it did, its tree must be the mapper's */
     private static boolean compare(String text) {
         JsonNode plain = PlainRunYaml.read(text);
