@@ -44,11 +44,11 @@ final class EvalWarmUp {
      */
     static void startFor(String[] args) {
         if (args.length < 2 || !args[0].equals("eval") || Runtime.getRuntime().availableProcessors() < 2
-                || gives(args, "--threads", "1")) {
+                || gives(args, "--threads", EvalWarmUp::isOne)) {
             return;
         }
         boolean planar = args[1].toLowerCase(java.util.Locale.ROOT).endsWith(".csv");
-        if (!planar && !gives(args, "--convention", "evo")) {
+        if (!planar && !gives(args, "--convention", "evo"::equals)) {
             // the 3D warm-up trains evo's path (nearest matching, SE(3)); for another convention it
             // cost a 10^6-pose lesson pair on two threads 0.2-0.3 s of CPU and gained nothing
             return;
@@ -65,15 +65,24 @@ final class EvalWarmUp {
         t.start();
     }
 
-    /** @return whether {@code args} give {@code option} the value {@code value}, as "OPTION VALUE" or "OPTION=VALUE" */
-    private static boolean gives(String[] args, String option, String value) {
+    /** @return whether {@code args} give {@code option} a value {@code wanted} accepts, as "OPTION VALUE" or "OPTION=VALUE" */
+    private static boolean gives(String[] args, String option, java.util.function.Predicate<String> wanted) {
         for (int i = 1; i < args.length; i++) {
-            if (args[i].equals(option + "=" + value) || args[i].equals(option) && i + 1 < args.length
-                    && args[i + 1].equals(value)) {
+            if (args[i].startsWith(option + "=") && wanted.test(args[i].substring(option.length() + 1))
+                    || args[i].equals(option) && i + 1 < args.length && wanted.test(args[i + 1])) {
                 return true;
             }
         }
         return false;
+    }
+
+    /** @return whether {@code --threads} reads {@code text} as 1 ({@link BoundedOptions#whole}: "01", " 1", "+1") */
+    private static boolean isOne(String text) {
+        try {
+            return Long.parseLong(text.trim()) == 1;
+        } catch (NumberFormatException e) {
+            return false;
+        }
     }
 
     /** @return whether a warm-up was started and not yet waited for */

@@ -79,6 +79,22 @@ class EvalWarmUpTest {
     }
 
     @Test
+    void oneThreadWrittenAsTheOptionReadsItStartsNoWarmUp() {
+        // --threads reads its value as a whole number (BoundedOptions.whole: trimmed, Long.parseLong), so these
+        // all ask for one thread; the warm-up compared the text with "1" and ran a second thread for them (rt9)
+        assumeTrue(Runtime.getRuntime().availableProcessors() >= 2, "without a second processor no warm-up starts");
+        for (String one : new String[] {"01", " 1", "+1", "1 ", "001"}) {
+            assertEquals(1, new BoundedOptions.Threads().convert(one), one);
+            for (String[] args : new String[][] {{"eval", "a.csv", "b.csv", "--threads", one},
+                {"eval", "a.csv", "b.csv", "--threads=" + one}}) {
+                EvalWarmUp.startFor(args);
+                assertFalse(EvalWarmUp.pending(), String.join(" ", args));
+            }
+        }
+        EvalWarmUp.awaitStarted();
+    }
+
+    @Test
     void anEvalOnTwoProcessorsStartsTheWarmUpAndTheCallWaitsForIt() {
         assumeTrue(Runtime.getRuntime().availableProcessors() >= 2, "needs a second processor");
         EvalWarmUp.startFor(new String[] {"eval", "a.csv", "b.csv", "--threads", "2"});
