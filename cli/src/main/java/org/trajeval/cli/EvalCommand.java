@@ -96,13 +96,13 @@ public final class EvalCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        EvalWarmUp.awaitStarted();
         List<SettingText> given = new ArrayList<>(SettingOptions.given(spec.commandLine().getParseResult()));
         if (batch != null) {
             if (reference != null || estimate != null || out != null || json || plots.wanted()) {
                 throw UsageProblem.of("--batch", "--batch reads the pairs from its table: give no REF EST, --out, "
                         + "--json or plot options with it", null);
             }
+            EvalWarmUp.awaitStarted();
             return EvalBatch.run(batch, reports, SettingValues.of(given, null), limits(), threads,
                     spec.commandLine().getOut(), spec.commandLine().getErr());
         }
@@ -135,6 +135,10 @@ public final class EvalCommand implements Callable<Integer> {
             OutputGuard.refuseFolderOfInputs(plots.seriesDir, "--save-series", inputs);
         }
         MemoryBudget.check(reference, estimate, Runtime.getRuntime().maxMemory(), plots.wanted());
+        if (inputs.stream().allMatch(Files::exists)) {
+            // a refusal above, or the reader's for a missing file, is not held back by the warm-up
+            EvalWarmUp.awaitStarted();
+        }
         ReadOptions limits = limits();
         EvaluationReport report;
         List<String> notices;

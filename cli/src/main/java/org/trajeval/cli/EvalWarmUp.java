@@ -25,7 +25,8 @@ import org.trajeval.core.report.ReportJson;
  * initialised, their method handles and annotation proxies made, and their hot methods profiled
  * or compiled before the real pair is read. Nothing of it is kept, written or printed; the real
  * evaluation starts only once it is over ({@link #awaitStarted()}), so the two never run side by
- * side, and a failure of the warm-up is ignored (the real run reports its own).
+ * side, and a failure of the warm-up is ignored (the real run reports its own). A command refused
+ * before reading (a usage error, a missing file) does not wait for it.
  */
 final class EvalWarmUp {
     /** Poses of each generated file. */

@@ -79,6 +79,23 @@ class EvalWarmUpTest {
     }
 
     @Test
+    void aRefusedEvalDoesNotWaitForTheWarmUp() {
+        // the call waited for the warm-up before anything else, so a typo in a path or a usage error was printed
+        // only after the warm-up's evaluation (0.2-0.3 s of a cold start, rt9); the warm-up stays pending
+        assumeTrue(Runtime.getRuntime().availableProcessors() >= 2, "without a second processor no warm-up starts");
+        Path missing = dir.resolve("missing.csv");
+        for (String[] args : new String[][] {{"eval", missing.toString(), missing.toString()},
+            {"eval", missing.toString()}, {"eval", missing.toString(), missing.toString(), "--align", "nope"}}) {
+            EvalWarmUp.startFor(args);
+            assertTrue(EvalWarmUp.pending(), String.join(" ", args));
+            CliRun run = CliRun.of(args);
+            assertEquals(2, run.code(), run.err());
+            assertTrue(EvalWarmUp.pending(), "waited for the warm-up: " + String.join(" ", args));
+            EvalWarmUp.awaitStarted();
+        }
+    }
+
+    @Test
     void oneThreadWrittenAsTheOptionReadsItStartsNoWarmUp() {
         // --threads reads its value as a whole number (BoundedOptions.whole: trimmed, Long.parseLong), so these
         // all ask for one thread; the warm-up compared the text with "1" and ran a second thread for them (rt9)
