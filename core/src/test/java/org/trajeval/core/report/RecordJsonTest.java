@@ -124,6 +124,46 @@ class RecordJsonTest {
     }
 
     @Test
+    void seededHostileTextAndNumbersAreWrittenAsTheMapperWritesThem() {
+        // run names, tags and factors as a pipeline report carries them: control characters, quotes, backslashes,
+        // U+2028/2029, DEL, NUL, lone surrogates, non-BMP characters; numbers of any bit pattern, -0.0, subnormals,
+        // non-finite; null entries (rt9: no difference found, kept as a guard)
+        java.util.Random rnd = new java.util.Random(20261126L);
+        for (int i = 0; i < 3000; i++) {
+            java.util.Map<String, String> tags = new java.util.LinkedHashMap<>();
+            java.util.Map<String, Double> factors = new java.util.LinkedHashMap<>();
+            for (int k = rnd.nextInt(4); k > 0; k--) {
+                tags.put(hostile(rnd), rnd.nextInt(5) == 0 ? null : hostile(rnd));
+                factors.put(hostile(rnd), rnd.nextInt(5) == 0 ? null : anyDouble(rnd));
+            }
+            assertWrittenAsTheMapperWrites(new MapsRecord(tags, factors, rnd.nextBoolean() ? null
+                    : java.util.Map.of(hostile(rnd), hostile(rnd)), null));
+            assertWrittenAsTheMapperWrites(new EvaluationReport.InputInfo(hostile(rnd), hostile(rnd),
+                    rnd.nextBoolean() ? null : hostile(rnd), rnd.nextInt(), rnd.nextBoolean() ? null : hostile(rnd)));
+        }
+    }
+
+    private static String hostile(java.util.Random rnd) {
+        StringBuilder b = new StringBuilder();
+        for (int i = rnd.nextInt(8); i > 0; i--) {
+            switch (rnd.nextInt(6)) {
+                case 0 -> b.append((char) rnd.nextInt(0x80));
+                case 1 -> b.append((char) rnd.nextInt(0x10000)); // lone surrogates included
+                case 2 -> b.appendCodePoint(0x10000 + rnd.nextInt(0x100000));
+                case 3 -> b.append("\u2028\u2029\"\\/\u007f\u0000\t\r\n".charAt(rnd.nextInt(10)));
+                default -> b.append((char) ('a' + rnd.nextInt(26)));
+            }
+        }
+        return b.toString();
+    }
+
+    private static double anyDouble(java.util.Random rnd) {
+        double[] odd = {Double.NaN, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, -0.0, 0.0, Double.MIN_VALUE,
+            Double.MAX_VALUE, 1e-7, 1e7, 0.1 + 0.2};
+        return rnd.nextBoolean() ? odd[rnd.nextInt(odd.length)] : Double.longBitsToDouble(rnd.nextLong());
+    }
+
+    @Test
     void typesOutsideItsRulesGoToTheMapper() {
         for (Object o : new Object[] {new WithGetter(1), new PartialOrder(1, 2), new NoOrder(1),
             new OtherValue(java.util.Set.of("x")), new NumberKeys(java.util.Map.of(1, "x")), List.of(1)}) {
