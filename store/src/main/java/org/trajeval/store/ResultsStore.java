@@ -55,6 +55,8 @@ public final class ResultsStore implements AutoCloseable {
     public static ResultsStore open(StoreLocation location, Clock clock) {
         Properties p = location.connectionProperties();
         if (location.dialect() == Dialect.SQLITE) {
+            // the driver's native library from a fixed file, not a fresh copy in /tmp at every start
+            SqliteNativeLibrary.configure(System.getenv());
             // WAL is switched on after connecting (SqliteWal), waiting for other connections' locks
             p.setProperty("synchronous", "NORMAL");
             p.setProperty("busy_timeout", Integer.toString(SqliteWal.BUSY_TIMEOUT_MS));
