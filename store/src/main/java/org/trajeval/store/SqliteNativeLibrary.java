@@ -57,6 +57,9 @@ final class SqliteNativeLibrary {
     private static final String JAR_FOLDER = "org/sqlite/native/";
     private static final String VERSION_RESOURCE = "META-INF/maven/org.xerial/sqlite-jdbc/VERSION";
 
+    /** Age after which a temporary copy in the cache is a dead start's leftover. */
+    static final java.time.Duration STALE_TEMPORARY = java.time.Duration.ofMinutes(10);
+
     private static boolean configured;
 
     private SqliteNativeLibrary() {
@@ -70,6 +73,7 @@ final class SqliteNativeLibrary {
      * Points the driver at a fixed copy of its library, once per JVM (see the class comment).
      *
      * @param env the environment (XDG_CACHE_HOME)
+     * @throws StoreException UNAVAILABLE when neither a fixed copy nor the driver's own way can work
      */
     static synchronized void configure(Map<String, String> env) {
         if (configured) {
@@ -79,8 +83,13 @@ final class SqliteNativeLibrary {
             configured = true;
             return;
         }
-        Optional<String> platform = platform(System.getProperty("os.name", ""), System.getProperty("os.arch", ""),
-                SqliteNativeLibrary::linuxIsMusl, isAndroid());
+        Optional<String> platform;
+        try {
+            platform = platform(System.getProperty("os.name", ""), System.getProperty("os.arch", ""),
+                    SqliteNativeLibrary::linuxIsMusl, isAndroid());
+        } catch (IllegalStateException e) {
+            platform = Optional.empty(); // /proc/self/maps unreadable: musl or not is the driver's to find out
+        }
         String lib = System.mapLibraryName("sqlitejdbc");
         ClassLoader loader = SqliteNativeLibrary.class.getClassLoader();
         URL resource = platform.isEmpty() ? null : loader.getResource(JAR_FOLDER + platform.get() + "/" + lib);
@@ -248,6 +257,7 @@ final class SqliteNativeLibrary {
             }
         }
         Path folder = Files.createDirectories(target.getParent());
+        deleteStaleTemporaries(folder, "." + target.getFileName());
         Path tmp = Files.createTempFile(folder, "." + target.getFileName(), ".tmp");
         try {
             Entry written;
@@ -261,6 +271,25 @@ final class SqliteNativeLibrary {
             return target;
         } finally {
             Files.deleteIfExists(tmp);
+        }
+    }
+
+    /**
+     * Deletes temporary copies older than {@link #STALE_TEMPORARY}: left by a start killed while
+     * writing (a concurrent writer's is younger).
+     */
+    private static void deleteStaleTemporaries(Path folder, String prefix) throws IOException {
+        long before = System.currentTimeMillis() - STALE_TEMPORARY.toMillis();
+        try (java.nio.file.DirectoryStream<Path> s = Files.newDirectoryStream(folder, prefix + "*.tmp")) {
+            for (Path p : s) {
+                try {
+                    if (Files.getLastModifiedTime(p).toMillis() < before) {
+                        Files.deleteIfExists(p);
+                    }
+                } catch (IOException e) {
+                    // another start deleted it, or it cannot be: the copy is written beside it anyway
+                }
+            }
         }
     }
 

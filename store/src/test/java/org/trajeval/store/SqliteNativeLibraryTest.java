@@ -119,7 +119,7 @@ class SqliteNativeLibraryTest {
     }
 
     @Test
-    void aHalfWrittenOrDamagedCopyInTheCacheIsReplaced() throws Exception {
+    void aHalfWrittenOrDamagedCopyInTheCacheIsReplacedAndADeadStartsTemporaryDeleted() throws Exception {
         Path tmp = Files.createDirectories(dir.resolve("tmp"));
         Path cache = dir.resolve("cache");
         assertEquals(0, start(tmp, cache).code());
@@ -131,13 +131,19 @@ class SqliteNativeLibraryTest {
         assertEquals(0, r.code(), r.err());
         assertArrayEquals(good, Files.readAllBytes(copy));
 
+        // a start killed while writing its temporary copy, long ago, and one writing now
+        Path dead = Files.write(copy.resolveSibling("." + LIB + "123.tmp"), new byte[1000]);
+        Files.setLastModifiedTime(dead, java.nio.file.attribute.FileTime.fromMillis(System.currentTimeMillis()
+                - SqliteNativeLibrary.STALE_TEMPORARY.toMillis() - 60_000));
+        Path live = Files.write(copy.resolveSibling("." + LIB + "456.tmp"), new byte[1000]);
         byte[] damaged = good.clone();
         damaged[good.length / 3] ^= 0x55; // same size, one byte different
         Files.write(copy, damaged);
         r = start(tmp, cache);
         assertEquals(0, r.code(), r.err());
         assertArrayEquals(good, Files.readAllBytes(copy));
-        assertEquals(List.of(copy), files(cache), "no temporary file left beside the copy");
+        assertEquals(java.util.Set.of(copy, live), java.util.Set.copyOf(files(cache)),
+                "the dead start's temporary copy deleted, the live one's kept, none of its own left");
     }
 
     @Test
