@@ -5,9 +5,7 @@ import java.sql.DriverManager;
 import java.sql.PreparedStatement;
 import java.sql.ResultSet;
 import java.sql.SQLException;
-import java.sql.Types;
 import java.time.Clock;
-import java.time.Instant;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.HashMap;
@@ -30,10 +28,6 @@ import java.util.Set;
  * One connection per store; methods are synchronized, so one store may serve several threads.
  */
 public final class ResultsStore implements AutoCloseable {
-    static final String LABELS = "result_sha256, origin, run_id, run_version, content_sha256, dataset, robot, site, "
-            + "route, method, software_version, seed, recorded_at, recorded_ms, status, failure_reason, source";
-    private static final int LABEL_COUNT = 17;
-
     /** Runs inserted through one connection after which SQLite's statistics are brought up to date. */
     static final int OPTIMIZE_EVERY = 1000;
 
@@ -55,6 +49,8 @@ public final class ResultsStore implements AutoCloseable {
     public static ResultsStore open(StoreLocation location, Clock clock) {
         Properties p = location.connectionProperties();
         if (location.dialect() == Dialect.SQLITE) {
+            // the driver's native library from a fixed file, not a fresh copy in /tmp at every start
+            SqliteNativeLibrary.configure(System.getenv());
             // WAL is switched on after connecting (SqliteWal), waiting for other connections' locks
             p.setProperty("synchronous", "NORMAL");
             p.setProperty("busy_timeout", Integer.toString(SqliteWal.BUSY_TIMEOUT_MS));
@@ -155,22 +151,14 @@ public final class ResultsStore implements AutoCloseable {
     }
 
     private int insert(List<RunRecord> list) throws SQLException {
-        StringBuilder sql = new StringBuilder("INSERT INTO runs (").append(LABELS).append(", ")
-                .append(RunDescription.COLUMNS);
-        for (String m : StoredMetric.keys()) {
-            sql.append(", ").append(m);
-        }
-        sql.append(") VALUES (?");
-        sql.append(", ?".repeat(LABEL_COUNT - 1 + RunDescription.COUNT + StoredMetric.keys().size()));
-        sql.append(") ON CONFLICT (result_sha256) DO NOTHING");
         connection.setAutoCommit(false);
         int inserted = 0;
         {
-            try (PreparedStatement runs = connection.prepareStatement(sql.toString());
+            try (PreparedStatement runs = connection.prepareStatement(RunRows.INSERT);
                     PreparedStatement tags = connection.prepareStatement("INSERT INTO run_tags (result_sha256, tag, "
                             + "value) VALUES (?, ?, ?) ON CONFLICT (result_sha256, tag) DO NOTHING")) {
                 for (RunRecord r : list) {
-                    bind(runs, r);
+                    RunRows.bind(runs, r);
                     runs.addBatch();
                 }
                 int[] counts = runs.executeBatch();
@@ -202,46 +190,6 @@ public final class ResultsStore implements AutoCloseable {
         }
         connection.commit();
         return inserted;
-    }
-
-    private static void bind(PreparedStatement s, RunRecord r) throws SQLException {
-        int i = 1;
-        s.setString(i++, r.resultSha256());
-        s.setString(i++, r.origin());
-        s.setString(i++, r.runId());
-        setInt(s, i++, r.runVersion());
-        s.setString(i++, r.contentSha256());
-        s.setString(i++, r.dataset());
-        s.setString(i++, r.robot());
-        s.setString(i++, r.site());
-        s.setString(i++, r.route());
-        s.setString(i++, r.method());
-        s.setString(i++, r.softwareVersion());
-        setLong(s, i++, r.seed());
-        s.setString(i++, r.recordedAt().toString());
-        s.setLong(i++, r.recordedAt().toEpochMilli());
-        s.setString(i++, r.ok() ? "ok" : "failed");
-        s.setString(i++, r.failureReason());
-        s.setString(i++, r.source());
-        Object[] description = r.description().values();
-        for (int k = 0; k < description.length; k++) {
-            boolean number = k >= RunDescription.COUNT - 2; // wall_time_s, peak_memory_mib
-            if (description[k] == null) {
-                s.setNull(i++, number ? Types.DOUBLE : Types.VARCHAR);
-            } else if (number) {
-                s.setDouble(i++, (Double) description[k]);
-            } else {
-                s.setString(i++, (String) description[k]);
-            }
-        }
-        for (String m : StoredMetric.keys()) {
-            Double v = r.metrics().get(m);
-            if (v == null || !Double.isFinite(v)) {
-                s.setNull(i++, Types.DOUBLE);
-            } else {
-                s.setDouble(i++, v);
-            }
-        }
     }
 
     /**
@@ -325,11 +273,7 @@ public final class ResultsStore implements AutoCloseable {
      * @return every stored result the selection takes, ordered by method, route, seed, key
      */
     public synchronized List<RunRecord> select(Selection selection, boolean withTags) {
-        StringBuilder sql = new StringBuilder("SELECT ").append(LABELS.replace("result_sha256", "r.result_sha256"));
-        for (String m : StoredMetric.keys()) {
-            sql.append(", ").append(m);
-        }
-        sql.append(" FROM runs r WHERE 1 = 1");
+        StringBuilder sql = new StringBuilder("SELECT ").append(RunRows.COLUMNS).append(" FROM runs r WHERE 1 = 1");
         List<Object> args = new ArrayList<>();
         selection.appendWhere(sql, args);
         sql.append(" ORDER BY method, route, seed, r.result_sha256");
@@ -338,7 +282,7 @@ public final class ResultsStore implements AutoCloseable {
             List<RunRecord> rows = new ArrayList<>();
             try (ResultSet rs = s.executeQuery()) {
                 while (rs.next()) {
-                    rows.add(read(rs));
+                    rows.add(RunRows.read(rs));
                 }
             }
             return withTags ? withTags(rows) : rows;
@@ -380,25 +324,6 @@ public final class ResultsStore implements AutoCloseable {
                     r.seed(), r.recordedAt(), r.ok(), r.failureReason(), r.metrics(), r.source(), t));
         }
         return out;
-    }
-
-    private static RunRecord read(ResultSet rs) throws SQLException {
-        Map<String, Double> metrics = new HashMap<>();
-        int col = LABEL_COUNT + 1;
-        for (String m : StoredMetric.keys()) {
-            double v = rs.getDouble(col++);
-            if (!rs.wasNull()) {
-                metrics.put(m, v);
-            }
-        }
-        int version = rs.getInt(4);
-        Integer runVersion = rs.wasNull() ? null : version;
-        long seed = rs.getLong(12);
-        Long seedValue = rs.wasNull() ? null : seed;
-        return new RunRecord(rs.getString(1), rs.getString(2), rs.getString(3), runVersion, rs.getString(5),
-                rs.getString(6), rs.getString(7), rs.getString(8), rs.getString(9), rs.getString(10),
-                rs.getString(11), seedValue, Instant.ofEpochMilli(rs.getLong(14)), "ok".equals(rs.getString(15)),
-                rs.getString(16), metrics, rs.getString(17), Map.of());
     }
 
     /**
@@ -466,22 +391,6 @@ public final class ResultsStore implements AutoCloseable {
             } else {
                 s.setString(i + 1, (String) a);
             }
-        }
-    }
-
-    private static void setInt(PreparedStatement s, int i, Integer v) throws SQLException {
-        if (v == null) {
-            s.setNull(i, Types.INTEGER);
-        } else {
-            s.setInt(i, v);
-        }
-    }
-
-    private static void setLong(PreparedStatement s, int i, Long v) throws SQLException {
-        if (v == null) {
-            s.setNull(i, Types.BIGINT);
-        } else {
-            s.setLong(i, v);
         }
     }
 
