@@ -41,11 +41,11 @@ final class EvalWarmUp {
      * Starts the warm-up for the launcher's arguments when they are an {@code eval} of a planar CSV
      * pair or of a 3D pair with {@code --convention evo} (the path the 3D warm-up trains), a second
      * processor is available (on one, the warm-up would only delay the main thread) and
-     * {@code --threads 1} (everything on one thread) is not given.
+     * {@code --threads 1} (everything on one thread) is not given (nor an argument file, which may give it).
      */
     static void startFor(String[] args) {
         if (args.length < 2 || !args[0].equals("eval") || Runtime.getRuntime().availableProcessors() < 2
-                || gives(args, "--threads", EvalWarmUp::isOne)) {
+                || gives(args, "--threads", EvalWarmUp::isOne) || readsAnArgumentFile(args)) {
             return;
         }
         boolean planar = args[1].toLowerCase(java.util.Locale.ROOT).endsWith(".csv");
@@ -71,6 +71,19 @@ final class EvalWarmUp {
         for (int i = 1; i < args.length; i++) {
             if (args[i].startsWith(option + "=") && wanted.test(args[i].substring(option.length() + 1))
                     || args[i].equals(option) && i + 1 < args.length && wanted.test(args[i + 1])) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * @return whether picocli reads more arguments from a file ({@code @FILE}): what they say (a
+     *     {@code --threads 1}) is not known here, so no warm-up is started
+     */
+    private static boolean readsAnArgumentFile(String[] args) {
+        for (String a : args) {
+            if (a.startsWith("@")) {
                 return true;
             }
         }

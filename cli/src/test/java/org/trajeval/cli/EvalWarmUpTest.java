@@ -112,6 +112,24 @@ class EvalWarmUpTest {
     }
 
     @Test
+    void anArgumentFileWhichMayAskForOneThreadStartsNoWarmUp() throws IOException {
+        // picocli reads more arguments from @FILE (checked below: its --threads 1 is the run's); the warm-up cannot
+        // see them, so it must not start (it ran on a second thread for such a run, rt9)
+        assumeTrue(Runtime.getRuntime().availableProcessors() >= 2, "without a second processor no warm-up starts");
+        Path options = Files.writeString(dir.resolve("options.txt"), "--threads\n1\n");
+        String[] args = {"eval", "a.csv", "b.csv", "@" + options};
+        try {
+            EvalWarmUp.startFor(args);
+            assertFalse(EvalWarmUp.pending(), String.join(" ", args));
+        } finally {
+            EvalWarmUp.awaitStarted(); // a wrongly started warm-up must not leak into the next test
+        }
+        Path bad = Files.writeString(dir.resolve("bad.txt"), "--threads\nzero\n");
+        CliRun run = CliRun.of("eval", "a.csv", "b.csv", "@" + bad);
+        assertTrue(run.err().contains("found \"zero\""), "picocli reads the file's arguments: " + run.err());
+    }
+
+    @Test
     void anEvalOnTwoProcessorsStartsTheWarmUpAndTheCallWaitsForIt() {
         assumeTrue(Runtime.getRuntime().availableProcessors() >= 2, "needs a second processor");
         EvalWarmUp.startFor(new String[] {"eval", "a.csv", "b.csv", "--threads", "2"});
