@@ -34,7 +34,7 @@ import java.util.zip.CRC32;
  *       {@code APP_HOME/lib/sqlite-native}) holding {@code DIR/OS/ARCH/LIB} with the jar entry's
  *       size, used in place (read-only installs and a missing {@code /tmp} included);</li>
  *   <li>else a per-version copy in the user's cache,
- *       {@code $XDG_CACHE_HOME/trajeval/sqlite-jdbc-VERSION/OS/ARCH/LIB} (default
+ *       {@code $XDG_CACHE_HOME/trajeval/sqlite-jdbc-VERSION-CRC/OS/ARCH/LIB} (default
  *       {@code ~/.cache}), checked against the jar entry's size and CRC-32 at every start and, when
  *       missing or different (half written, damaged), written again: to a temporary file in the same
  *       folder, checked, then renamed over it atomically (a concurrent start sees the old file or
@@ -88,7 +88,7 @@ final class SqliteNativeLibrary {
             platform = platform(System.getProperty("os.name", ""), System.getProperty("os.arch", ""),
                     SqliteNativeLibrary::linuxIsMusl, isAndroid());
         } catch (IllegalStateException e) {
-            platform = Optional.empty(); // /proc/self/maps unreadable: musl or not is the driver's to find out
+            platform = Optional.empty(); // /proc/self/exe unreadable: musl or not is the driver's to find out
         }
         String lib = System.mapLibraryName("sqlitejdbc");
         ClassLoader loader = SqliteNativeLibrary.class.getClassLoader();
@@ -135,7 +135,9 @@ final class SqliteNativeLibrary {
         }
         Path cache = cacheRoot(env, System.getProperty("user.home"))
                 .orElseThrow(() -> new IOException("no home folder and no XDG_CACHE_HOME"));
-        Path folder = cache.resolve("sqlite-jdbc-" + version(loader)).resolve(platform);
+        // the version file says 3.54.1 for 3.54.1.0: the CRC keeps two builds of one version apart
+        Path folder = cache.resolve("sqlite-jdbc-" + version(loader) + "-" + String.format("%08x", expected.crc()))
+                .resolve(platform);
         return ensureCopy(resource, expected, folder.resolve(lib)).getParent();
     }
 
@@ -187,13 +189,22 @@ final class SqliteNativeLibrary {
         return Optional.empty();
     }
 
-    /** The driver's test: a musl JVM maps a musl C library (it resolves /proc/self/map_files; the map names suffice). */
+    /**
+     * Whether this JVM runs on musl libc (Alpine): the dynamic loader its executable names (ELF
+     * {@code PT_INTERP}, in the first page: {@code /lib/ld-musl-x86_64.so.1} against glibc's
+     * {@code /lib64/ld-linux-x86-64.so.2}). The driver resolves every entry of
+     * {@code /proc/self/map_files} for the same answer (a JVM maps the C library its executable's
+     * loader loads).
+     */
     private static boolean linuxIsMusl() {
-        try {
-            return Files.readString(Path.of("/proc/self/maps"), StandardCharsets.ISO_8859_1).contains("musl");
+        byte[] head = new byte[4096];
+        int n;
+        try (InputStream in = Files.newInputStream(Path.of("/proc/self/exe"))) {
+            n = in.readNBytes(head, 0, head.length);
         } catch (IOException | RuntimeException e) {
-            throw new IllegalStateException("cannot read /proc/self/maps", e);
+            throw new IllegalStateException("cannot read /proc/self/exe", e);
         }
+        return new String(head, 0, n, StandardCharsets.ISO_8859_1).contains("ld-musl-");
     }
 
     /** The driver's tests for Android, without its {@code uname -o} (Termux runs on Android, whose files it checks). */
