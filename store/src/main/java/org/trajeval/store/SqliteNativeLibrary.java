@@ -104,9 +104,10 @@ final class SqliteNativeLibrary {
             if (!driverCanLoad(lib)) {
                 // the driver would fail too, logging stack traces: one line instead (tried again at the next open)
                 throw new StoreException(StoreException.Problem.UNAVAILABLE, "cannot load SQLite's native library: "
-                        + "no copy in the cache (" + e.getClass().getSimpleName() + ": " + e.getMessage() + ") and the temp folder "
-                        + driverTmpdir() + " is missing or read-only. Set XDG_CACHE_HOME or -Djava.io.tmpdir to a "
-                        + "writable folder, or -D" + LIB_PATH + " to a folder holding " + lib, e);
+                        + "no copy in the cache (" + e.getClass().getSimpleName() + ": " + e.getMessage()
+                        + ") and the temp folder " + driverTmpdir() + " is missing or read-only. Set XDG_CACHE_HOME "
+                        + "or -Djava.io.tmpdir to a writable folder, or -D" + LIB_PATH + " to a folder holding "
+                        + lib, e);
             }
             configured = true;
             return; // the driver's own extraction into the temp folder
@@ -228,7 +229,10 @@ final class SqliteNativeLibrary {
         }
     }
 
-    /** @return {@code $XDG_CACHE_HOME/trajeval} when absolute, else {@code HOME/.cache/trajeval}; empty without a home */
+    /**
+     * @return {@code $XDG_CACHE_HOME/trajeval} when absolute, else {@code HOME/.cache/trajeval};
+     *     empty without a home
+     */
     static Optional<Path> cacheRoot(Map<String, String> env, String userHome) {
         String xdg = env.get("XDG_CACHE_HOME");
         if (xdg != null && !xdg.isEmpty() && Path.of(xdg).isAbsolute()) {
