@@ -44,9 +44,10 @@ import java.util.zip.CRC32;
  * in the jar; an unwritable cache) keeps the driver's own behaviour; when that cannot work either
  * (its temp folder missing or read-only, no library on {@code java.library.path}), opening the
  * store fails with one line saying so ({@link StoreException.Problem#UNAVAILABLE}) instead of the
- * driver's logged stack traces. When {@code java.io.tmpdir} is not a folder,
+ * driver's logged stack traces. When {@code java.io.tmpdir} is not a writable folder,
  * {@code org.sqlite.tmpdir} is pointed at the library's folder too, unless set: the driver's
- * clean-up lists that folder at every start and would log a failure otherwise.
+ * clean-up lists that folder at every start (deleting its old copies) and would log a failure
+ * otherwise.
  */
 final class SqliteNativeLibrary {
     /** System property naming the distribution's folder of native libraries, laid out as OS/ARCH/LIB. */
@@ -114,7 +115,7 @@ final class SqliteNativeLibrary {
         }
         configured = true;
         System.setProperty(LIB_PATH, folder.toString());
-        if (System.getProperty(DRIVER_TMPDIR) == null && !Files.isDirectory(Path.of(driverTmpdir()))) {
+        if (System.getProperty(DRIVER_TMPDIR) == null && !writableFolder(Path.of(driverTmpdir()))) {
             System.setProperty(DRIVER_TMPDIR, folder.toString());
         }
     }
@@ -146,10 +147,13 @@ final class SqliteNativeLibrary {
         return System.getProperty(DRIVER_TMPDIR, System.getProperty("java.io.tmpdir", ""));
     }
 
+    private static boolean writableFolder(Path p) {
+        return Files.isDirectory(p) && Files.isWritable(p);
+    }
+
     /** @return whether the driver's own ways may work: extraction into its temp folder, or java.library.path */
     private static boolean driverCanLoad(String lib) {
-        Path tmp = Path.of(driverTmpdir());
-        if (Files.isDirectory(tmp) && Files.isWritable(tmp)) {
+        if (writableFolder(Path.of(driverTmpdir()))) {
             return true;
         }
         for (String dir : System.getProperty("java.library.path", "").split(java.io.File.pathSeparator)) {
