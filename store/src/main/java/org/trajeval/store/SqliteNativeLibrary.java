@@ -34,7 +34,7 @@ import java.util.zip.CRC32;
  *       {@code APP_HOME/lib/sqlite-native}) holding {@code DIR/OS/ARCH/LIB} with the jar entry's
  *       size, used in place (read-only installs and a missing {@code /tmp} included);</li>
  *   <li>else a per-version copy in the user's cache,
- *       {@code $XDG_CACHE_HOME/trajeval/sqlite-jdbc-VERSION/OS/ARCH/LIB} (default
+ *       {@code $XDG_CACHE_HOME/trajeval/sqlite-jdbc-VERSION-CRC/OS/ARCH/LIB} (default
  *       {@code ~/.cache}), checked against the jar entry's size and CRC-32 at every start and, when
  *       missing or different (half written, damaged), written again: to a temporary file in the same
  *       folder, checked, then renamed over it atomically (a concurrent start sees the old file or
@@ -44,9 +44,10 @@ import java.util.zip.CRC32;
  * in the jar; an unwritable cache) keeps the driver's own behaviour; when that cannot work either
  * (its temp folder missing or read-only, no library on {@code java.library.path}), opening the
  * store fails with one line saying so ({@link StoreException.Problem#UNAVAILABLE}) instead of the
- * driver's logged stack traces. When {@code java.io.tmpdir} is not a folder,
+ * driver's logged stack traces. When {@code java.io.tmpdir} is not a writable folder,
  * {@code org.sqlite.tmpdir} is pointed at the library's folder too, unless set: the driver's
- * clean-up lists that folder at every start and would log a failure otherwise.
+ * clean-up lists that folder at every start (deleting its old copies) and would log a failure
+ * otherwise.
  */
 final class SqliteNativeLibrary {
     /** System property naming the distribution's folder of native libraries, laid out as OS/ARCH/LIB. */
@@ -88,7 +89,7 @@ final class SqliteNativeLibrary {
             platform = platform(System.getProperty("os.name", ""), System.getProperty("os.arch", ""),
                     SqliteNativeLibrary::linuxIsMusl, isAndroid());
         } catch (IllegalStateException e) {
-            platform = Optional.empty(); // /proc/self/maps unreadable: musl or not is the driver's to find out
+            platform = Optional.empty(); // /proc/self/exe unreadable: musl or not is the driver's to find out
         }
         String lib = System.mapLibraryName("sqlitejdbc");
         ClassLoader loader = SqliteNativeLibrary.class.getClassLoader();
@@ -104,16 +105,17 @@ final class SqliteNativeLibrary {
             if (!driverCanLoad(lib)) {
                 // the driver would fail too, logging stack traces: one line instead (tried again at the next open)
                 throw new StoreException(StoreException.Problem.UNAVAILABLE, "cannot load SQLite's native library: "
-                        + "no copy in the cache (" + e.getClass().getSimpleName() + ": " + e.getMessage() + ") and the temp folder "
-                        + driverTmpdir() + " is missing or read-only. Set XDG_CACHE_HOME or -Djava.io.tmpdir to a "
-                        + "writable folder, or -D" + LIB_PATH + " to a folder holding " + lib, e);
+                        + "no copy in the cache (" + e.getClass().getSimpleName() + ": " + e.getMessage()
+                        + ") and the temp folder " + driverTmpdir() + " is missing or read-only. Set XDG_CACHE_HOME "
+                        + "or -Djava.io.tmpdir to a writable folder, or -D" + LIB_PATH + " to a folder holding "
+                        + lib, e);
             }
             configured = true;
             return; // the driver's own extraction into the temp folder
         }
         configured = true;
         System.setProperty(LIB_PATH, folder.toString());
-        if (System.getProperty(DRIVER_TMPDIR) == null && !Files.isDirectory(Path.of(driverTmpdir()))) {
+        if (System.getProperty(DRIVER_TMPDIR) == null && !writableFolder(Path.of(driverTmpdir()))) {
             System.setProperty(DRIVER_TMPDIR, folder.toString());
         }
     }
@@ -135,7 +137,9 @@ final class SqliteNativeLibrary {
         }
         Path cache = cacheRoot(env, System.getProperty("user.home"))
                 .orElseThrow(() -> new IOException("no home folder and no XDG_CACHE_HOME"));
-        Path folder = cache.resolve("sqlite-jdbc-" + version(loader)).resolve(platform);
+        // the version file says 3.54.1 for 3.54.1.0: the CRC keeps two builds of one version apart
+        Path folder = cache.resolve("sqlite-jdbc-" + version(loader) + "-" + String.format("%08x", expected.crc()))
+                .resolve(platform);
         return ensureCopy(resource, expected, folder.resolve(lib)).getParent();
     }
 
@@ -143,10 +147,13 @@ final class SqliteNativeLibrary {
         return System.getProperty(DRIVER_TMPDIR, System.getProperty("java.io.tmpdir", ""));
     }
 
+    private static boolean writableFolder(Path p) {
+        return Files.isDirectory(p) && Files.isWritable(p);
+    }
+
     /** @return whether the driver's own ways may work: extraction into its temp folder, or java.library.path */
     private static boolean driverCanLoad(String lib) {
-        Path tmp = Path.of(driverTmpdir());
-        if (Files.isDirectory(tmp) && Files.isWritable(tmp)) {
+        if (writableFolder(Path.of(driverTmpdir()))) {
             return true;
         }
         for (String dir : System.getProperty("java.library.path", "").split(java.io.File.pathSeparator)) {
@@ -187,13 +194,22 @@ final class SqliteNativeLibrary {
         return Optional.empty();
     }
 
-    /** The driver's test: a musl JVM maps a musl C library (it resolves /proc/self/map_files; the map names suffice). */
+    /**
+     * Whether this JVM runs on musl libc (Alpine): the dynamic loader its executable names (ELF
+     * {@code PT_INTERP}, in the first page: {@code /lib/ld-musl-x86_64.so.1} against glibc's
+     * {@code /lib64/ld-linux-x86-64.so.2}). The driver resolves every entry of
+     * {@code /proc/self/map_files} for the same answer (a JVM maps the C library its executable's
+     * loader loads).
+     */
     private static boolean linuxIsMusl() {
-        try {
-            return Files.readString(Path.of("/proc/self/maps"), StandardCharsets.ISO_8859_1).contains("musl");
+        byte[] head = new byte[4096];
+        int n;
+        try (InputStream in = Files.newInputStream(Path.of("/proc/self/exe"))) {
+            n = in.readNBytes(head, 0, head.length);
         } catch (IOException | RuntimeException e) {
-            throw new IllegalStateException("cannot read /proc/self/maps", e);
+            throw new IllegalStateException("cannot read /proc/self/exe", e);
         }
+        return new String(head, 0, n, StandardCharsets.ISO_8859_1).contains("ld-musl-");
     }
 
     /** The driver's tests for Android, without its {@code uname -o} (Termux runs on Android, whose files it checks). */
@@ -217,7 +233,10 @@ final class SqliteNativeLibrary {
         }
     }
 
-    /** @return {@code $XDG_CACHE_HOME/trajeval} when absolute, else {@code HOME/.cache/trajeval}; empty without a home */
+    /**
+     * @return {@code $XDG_CACHE_HOME/trajeval} when absolute, else {@code HOME/.cache/trajeval};
+     *     empty without a home
+     */
     static Optional<Path> cacheRoot(Map<String, String> env, String userHome) {
         String xdg = env.get("XDG_CACHE_HOME");
         if (xdg != null && !xdg.isEmpty() && Path.of(xdg).isAbsolute()) {

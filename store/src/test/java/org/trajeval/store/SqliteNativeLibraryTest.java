@@ -185,7 +185,8 @@ class SqliteNativeLibraryTest {
         Run r = start(dir.resolve("no/such/tmp"), Path.of("/proc/trajeval-no-cache"));
         assertEquals(3, r.code(), r.err());
         assertEquals(1, r.err().strip().lines().count(), r.err());
-        assertTrue(r.err().startsWith("cannot load SQLite's native library") && r.err().contains("java.io.tmpdir"), r.err());
+        assertTrue(r.err().startsWith("cannot load SQLite's native library") && r.err().contains("java.io.tmpdir"),
+                r.err());
     }
 
     @Test
