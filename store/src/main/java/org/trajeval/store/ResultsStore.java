@@ -14,6 +14,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Properties;
 import java.util.Set;
+import org.trajeval.core.io.sqlite.SqliteNativeLibrary;
 
 /**
  * The results store: run results in one SQL schema on SQLite or PostgreSQL, through plain JDBC
@@ -50,7 +51,11 @@ public final class ResultsStore implements AutoCloseable {
         Properties p = location.connectionProperties();
         if (location.dialect() == Dialect.SQLITE) {
             // the driver's native library from a fixed file, not a fresh copy in /tmp at every start
-            SqliteNativeLibrary.configure(System.getenv());
+            try {
+                SqliteNativeLibrary.configure(System.getenv());
+            } catch (IllegalStateException e) {
+                throw new StoreException(StoreException.Problem.UNAVAILABLE, e.getMessage(), e);
+            }
             // WAL is switched on after connecting (SqliteWal), waiting for other connections' locks
             p.setProperty("synchronous", "NORMAL");
             p.setProperty("busy_timeout", Integer.toString(SqliteWal.BUSY_TIMEOUT_MS));

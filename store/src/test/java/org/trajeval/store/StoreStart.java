@@ -5,13 +5,14 @@ import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.time.Clock;
+import org.trajeval.core.io.sqlite.SqliteNativeLibrary;
 
 /**
  * A process that opens a SQLite store the way a user's process does, for the tests that start it
  * in child JVMs: {@code StoreStart DB [wait]}. It prints the driver's library folder
  * ({@code org.sqlite.lib.path}, "-" when unset) and "open"; with {@code wait} it then keeps the store
  * open until a line arrives on stdin (or the process is killed). A store that cannot open prints
- * its message on stderr and exits 3.
+ * its message on stderr and exits 3 when the store is UNAVAILABLE (4 for any other problem).
  */
 final class StoreStart {
     private StoreStart() {
@@ -23,7 +24,7 @@ final class StoreStart {
             store = ResultsStore.open(StoreLocation.sqlite(Path.of(args[0])), Clock.systemUTC());
         } catch (StoreException e) {
             System.err.println(e.getMessage());
-            System.exit(3);
+            System.exit(e.problem() == StoreException.Problem.UNAVAILABLE ? 3 : 4);
             return;
         }
         try (store) {

@@ -26,6 +26,11 @@ final class BagProblems {
         return new InputException(source, 0, null, InputProblem.UNSUPPORTED_BAG_FEATURE, what, found);
     }
 
+    /** @return a refusal for a bag that cannot be read on this machine (what: one line, the reason and its fix) */
+    static InputException unreadable(String source, String what, Throwable cause) {
+        return new InputException(source, 0, null, InputProblem.UNREADABLE, what, null, cause);
+    }
+
     /** @return a refusal for an I/O failure while reading the bag */
     static InputException io(String source, IOException e) {
         return new InputException(source, 0, null, InputProblem.UNREADABLE, "the file cannot be read ("

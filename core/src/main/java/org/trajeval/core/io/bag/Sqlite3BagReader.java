@@ -13,6 +13,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.Predicate;
 import org.sqlite.SQLiteConfig;
+import org.trajeval.core.io.sqlite.SqliteNativeLibrary;
 
 /**
  * rosbag2 sqlite3 storage ({@code .db3}), read-only through JDBC: table {@code topics} (id, name,
@@ -27,6 +28,12 @@ final class Sqlite3BagReader implements BagContainer {
 
     Sqlite3BagReader(Path path, String source, BagLimits limits) {
         this.source = source;
+        try {
+            // the driver's native library from a fixed file, not a fresh copy in /tmp at every start
+            SqliteNativeLibrary.configure(System.getenv());
+        } catch (IllegalStateException e) {
+            throw BagProblems.unreadable(source, e.getMessage(), e);
+        }
         try {
             SQLiteConfig config = new SQLiteConfig();
             config.setReadOnly(true);

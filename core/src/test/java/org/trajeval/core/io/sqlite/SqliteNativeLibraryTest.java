@@ -1,4 +1,4 @@
-package org.trajeval.store;
+package org.trajeval.core.io.sqlite;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -22,9 +22,9 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * The SQLite driver's native library comes from one fixed, checked file: starting the store (in
- * child JVMs, as users run it) leaves nothing in the temp folder, even when killed, and a damaged
- * copy is replaced.
+ * The SQLite driver's native library comes from one fixed, checked file: opening a SQLite file
+ * after {@link SqliteNativeLibrary#configure} (in child JVMs, as users run trajeval) leaves nothing
+ * in the temp folder, even when killed, and a damaged copy is replaced.
  */
 class SqliteNativeLibraryTest {
     private static final String LIB = System.mapLibraryName("sqlitejdbc");
@@ -35,7 +35,7 @@ class SqliteNativeLibraryTest {
     record Run(int code, List<String> out, String err) {
     }
 
-    /** Starts {@link StoreStart} with this temp folder and cache, waits for it to end. */
+    /** Starts {@link SqliteStart} with this temp folder and cache, waits for it to end. */
     private Run start(Path tmp, Path cache, String... jvmOptions) throws Exception {
         Process p = child(tmp, cache, false, jvmOptions);
         assertTrue(p.waitFor(120, TimeUnit.SECONDS), "the child JVM ended");
@@ -47,8 +47,8 @@ class SqliteNativeLibraryTest {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Xshare:auto", "-XX:TieredStopAtLevel=1", "-Djava.io.tmpdir=" + tmp));
         cmd.addAll(List.of(jvmOptions));
-        cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), StoreStart.class.getName(),
-                dir.resolve("store.db").toString()));
+        cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), SqliteStart.class.getName(),
+                dir.resolve("test.db").toString()));
         if (wait) {
             cmd.add("wait");
         }
@@ -86,14 +86,14 @@ class SqliteNativeLibraryTest {
     }
 
     @Test
-    void aRunningAndAKilledStoreLeaveNothingInTheTempFolder() throws Exception {
+    void anOpenAndAKilledConnectionLeaveNothingInTheTempFolder() throws Exception {
         Path tmp = Files.createDirectories(dir.resolve("tmp"));
         Process p = child(tmp, dir.resolve("cache"), true);
         try {
             BufferedReader out = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8));
             String libPath = out.readLine();
-            assertEquals("open", out.readLine(), "the store opened (library folder " + libPath + ")");
-            assertEquals(List.of(), files(tmp), "nothing in the temp folder while the store is open");
+            assertEquals("open", out.readLine(), "the file opened (library folder " + libPath + ")");
+            assertEquals(List.of(), files(tmp), "nothing in the temp folder while the connection is open");
         } finally {
             p.destroyForcibly(); // SIGKILL: no shutdown hook, no deleteOnExit
             assertTrue(p.waitFor(60, TimeUnit.SECONDS));
@@ -172,7 +172,7 @@ class SqliteNativeLibraryTest {
     }
 
     @Test
-    void aMissingTempFolderDoesNotStopTheStore() throws Exception {
+    void aMissingTempFolderDoesNotStopTheConnection() throws Exception {
         Run r = start(dir.resolve("no/such/tmp"), dir.resolve("cache"));
         assertEquals(0, r.code(), r.err());
         assertEquals("", r.err(), "nothing logged by the driver");
@@ -180,7 +180,7 @@ class SqliteNativeLibraryTest {
     }
 
     @Test
-    void withoutACacheAndATempFolderTheStoreFailsWithOneLine() throws Exception {
+    void withoutACacheAndATempFolderConfigureFailsWithOneLine() throws Exception {
         // /proc cannot hold a new folder, even for root
         Run r = start(dir.resolve("no/such/tmp"), Path.of("/proc/trajeval-no-cache"));
         assertEquals(3, r.code(), r.err());

@@ -1,4 +1,4 @@
-package org.trajeval.store;
+package org.trajeval.core.io.sqlite;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -27,8 +27,8 @@ import java.util.zip.CRC32;
  * the next start spares every copy that has a {@code .lck}. To name the platform it runs
  * {@code uname -o} in a child process and resolves every entry of {@code /proc/self/map_files}. It
  * skips all of that when the system property {@code org.sqlite.lib.path} names a folder holding
- * the library, which this class sets before the store's first SQLite connection, unless the user
- * set it (or {@code org.sqlite.lib.name}):
+ * the library, which this class sets before the first SQLite connection of the results store and
+ * of the rosbag2 sqlite3 reader, unless the user set it (or {@code org.sqlite.lib.name}):
  * <ol>
  *   <li>the distribution's copy: {@value #DIST_PROPERTY}{@code =DIR} (the launchers pass
  *       {@code APP_HOME/lib/sqlite-native}) holding {@code DIR/OS/ARCH/LIB} with the jar entry's
@@ -42,17 +42,18 @@ import java.util.zip.CRC32;
  * </ol>
  * Anything else (a platform not named without a child process: 32-bit ARM, Android; no library
  * in the jar; an unwritable cache) keeps the driver's own behaviour; when that cannot work either
- * (its temp folder missing or read-only, no library on {@code java.library.path}), opening the
- * store fails with one line saying so ({@link StoreException.Problem#UNAVAILABLE}) instead of the
+ * (its temp folder missing or read-only, no library on {@code java.library.path}), {@link #configure}
+ * fails with one line saying so (the store's UNAVAILABLE, the bag reader's refusal) instead of the
  * driver's logged stack traces. When {@code java.io.tmpdir} is not a writable folder,
  * {@code org.sqlite.tmpdir} is pointed at the library's folder too, unless set: the driver's
  * clean-up lists that folder at every start (deleting its old copies) and would log a failure
  * otherwise.
  */
-final class SqliteNativeLibrary {
+public final class SqliteNativeLibrary {
     /** System property naming the distribution's folder of native libraries, laid out as OS/ARCH/LIB. */
     static final String DIST_PROPERTY = "trajeval.sqlite.native";
-    static final String LIB_PATH = "org.sqlite.lib.path";
+    /** The driver's system property naming the folder it loads its library from (set by {@link #configure}). */
+    public static final String LIB_PATH = "org.sqlite.lib.path";
     static final String LIB_NAME = "org.sqlite.lib.name";
     static final String DRIVER_TMPDIR = "org.sqlite.tmpdir";
     private static final String JAR_FOLDER = "org/sqlite/native/";
@@ -74,9 +75,10 @@ final class SqliteNativeLibrary {
      * Points the driver at a fixed copy of its library, once per JVM (see the class comment).
      *
      * @param env the environment (XDG_CACHE_HOME)
-     * @throws StoreException UNAVAILABLE when neither a fixed copy nor the driver's own way can work
+     * @throws IllegalStateException when neither a fixed copy nor the driver's own way can work: its
+     *     message is one line naming the fix (tried again at the next call)
      */
-    static synchronized void configure(Map<String, String> env) {
+    public static synchronized void configure(Map<String, String> env) {
         if (configured) {
             return;
         }
@@ -104,7 +106,7 @@ final class SqliteNativeLibrary {
         } catch (IOException | RuntimeException e) {
             if (!driverCanLoad(lib)) {
                 // the driver would fail too, logging stack traces: one line instead (tried again at the next open)
-                throw new StoreException(StoreException.Problem.UNAVAILABLE, "cannot load SQLite's native library: "
+                throw new IllegalStateException("cannot load SQLite's native library: "
                         + "no copy in the cache (" + e.getClass().getSimpleName() + ": " + e.getMessage()
                         + ") and the temp folder " + driverTmpdir() + " is missing or read-only. Set XDG_CACHE_HOME "
                         + "or -Djava.io.tmpdir to a writable folder, or -D" + LIB_PATH + " to a folder holding "
