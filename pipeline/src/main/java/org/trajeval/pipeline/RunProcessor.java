@@ -7,8 +7,8 @@ import org.trajeval.pipeline.bundle.ContentHash;
 
 /**
  * Turns one {@link RunJob} into a report: read (each file parsed and hashed in one pass), fingerprint,
- * skip if already reported, score, file the
- * report. Shared by the directory and the Kafka mode. Thread-safe.
+ * skip if already reported, score ({@link #score}), file the report ({@link #file}). Shared by the
+ * directory and the Kafka mode. Thread-safe.
  */
 public final class RunProcessor {
     private final RunScorer scorer;
@@ -29,13 +29,31 @@ public final class RunProcessor {
     }
 
     /**
-     * Processes a run.
+     * Processes a run: {@link #file} of {@link #score}.
      *
      * @throws StageException when the run cannot be scored (with stage and reason)
      * @throws EnvironmentException when the report or the ledger cannot be written (disk full, read-only
      *     folder): the run is not at fault and must be retried
      */
     public RunResult process(RunJob job) {
+        return file(score(job));
+    }
+
+    /**
+     * A run read, fingerprinted and scored, its report not yet filed: either {@code duplicate} (its
+     * content was reported before: nothing to file) or the evaluation with the draft of its figures.
+     */
+    public record Scored(RunJob job, ContentHash hash, EvaluationReport evaluation, Path draft, RunResult duplicate) {
+    }
+
+    /**
+     * The computing half of {@link #process}: reads (each file parsed and hashed in one pass),
+     * fingerprints, looks the content up in the ledger, scores and draws the figures asked for.
+     * Writes nothing durable: a caller may hand the result to another thread for {@link #file}.
+     *
+     * @throws StageException when the run cannot be scored (with stage and reason)
+     */
+    public Scored score(RunJob job) {
         ContentHash hash;
         RunInputs inputs;
         try {
@@ -51,8 +69,8 @@ public final class RunProcessor {
             var earlier = store.find(runId, hash);
             if (earlier.isPresent()) {
                 int v = earlier.get().version();
-                return new RunResult(Outcome.DUPLICATE, runId, v, store.reportFile(runId, v), null,
-                        earlier.get().source());
+                return new Scored(job, hash, null, null, new RunResult(Outcome.DUPLICATE, runId, v,
+                        store.reportFile(runId, v), null, earlier.get().source()));
             }
         }
         EvaluationReport evaluation;
@@ -76,8 +94,23 @@ public final class RunProcessor {
                 evaluation = evaluation.withWarning(plotFailed(e));
             }
         }
+        return new Scored(job, hash, evaluation, draft, null);
+    }
+
+    /**
+     * The durable half of {@link #process}: files the scored run's report (written and fsync'd, then
+     * its ledger line fsync'd: {@link ReportStore#commit}); a duplicate is returned as it is.
+     *
+     * @throws StageException when the report cannot be made (with stage and reason)
+     * @throws EnvironmentException when the report or the ledger cannot be written (disk full, read-only
+     *     folder): the run is not at fault and must be retried
+     */
+    public RunResult file(Scored scored) {
+        if (scored.duplicate() != null) {
+            return scored.duplicate();
+        }
         try {
-            return store.commit(job, hash, evaluation, draft);
+            return store.commit(scored.job(), scored.hash(), scored.evaluation(), scored.draft());
         } catch (java.io.UncheckedIOException e) {
             throw EnvironmentException.of(e);
         } catch (EnvironmentException e) {
@@ -85,7 +118,7 @@ public final class RunProcessor {
         } catch (RuntimeException e) {
             throw new StageException(RunFailure.of(Stage.REPORT, e), e);
         } finally {
-            RunPlots.discard(draft); // moved into place, or not wanted (a duplicate, a failed commit)
+            RunPlots.discard(scored.draft()); // moved into place, or not wanted (a duplicate, a failed commit)
         }
     }
 

@@ -12,6 +12,7 @@ import java.time.Clock;
 import java.time.Duration;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.Semaphore;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -35,6 +36,10 @@ import org.trajeval.pipeline.metrics.PipelineMetrics;
  * The directory mode: watches {@code incoming/}, claims each complete bundle by an atomic move
  * into {@code processing/}, scores it on a bounded worker pool, writes {@code reports/RUN_ID.json}
  * and moves the bundle to {@code done/}, or to {@code failed/} with {@code NAME.error.json}.
+ *
+ * <p>A bundle is scored on one of {@code workers} threads and filed (its report and ledger line
+ * fsync'd, then the move) on one of as many committing threads, so a worker does not wait for the
+ * disk before it scores the next claimed bundle.
  *
  * <p>Backpressure: at most {@code workers + queueCapacity} bundles are claimed at once; the
  * scanner reads incoming/ as a lazy directory stream and waits for a free permit, so a backlog of
@@ -71,6 +76,7 @@ public final class DirectoryService {
     private final AtomicLong kept = new AtomicLong();
     private volatile EnvironmentException environmentFailure;
     private Duration backoff = MIN_BACKOFF;
+    private ExecutorService committers;
 
     /** First pause after an environment failure in a running service. */
     static final Duration MIN_BACKOFF = Duration.ofSeconds(1);
@@ -132,6 +138,13 @@ public final class DirectoryService {
             t.setDaemon(false);
             return t;
         });
+        // a run's filing (report and ledger fsyncs, the move to done/) waits on the disk: on threads of
+        // its own, so that a worker scores the next claimed bundle meanwhile (as eval --batch's report writer)
+        committers = Executors.newFixedThreadPool(options.workers(), r -> {
+            Thread t = new Thread(r, "trajeval-commit");
+            t.setDaemon(false);
+            return t;
+        });
         StaleTempFiles.clean(layout.reports(), clock);
         StaleTempFiles.clean(layout.failed(), clock);
         try {
@@ -164,18 +177,24 @@ public final class DirectoryService {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         } finally {
-            workers.shutdown();
-            try {
-                while (!workers.awaitTermination(1, TimeUnit.SECONDS)) {
-                    LOG.info("waiting for in-flight runs to finish");
-                }
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
+            // the workers hand their runs to the committers: those stop once the workers have
+            awaitTermination(workers);
+            awaitTermination(committers);
             running = false;
         }
         long unfinished = environmentFailure == null && kept.get() == 0 ? 0 : kept.get() + countKeys();
         return new DrainSummary(reported.get(), duplicates.get(), failed.get(), unfinished);
+    }
+
+    private static void awaitTermination(ExecutorService pool) {
+        pool.shutdown();
+        try {
+            while (!pool.awaitTermination(1, TimeUnit.SECONDS)) {
+                LOG.info("waiting for in-flight runs to finish");
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     /** Waits {@link #backoff} (doubling it up to {@link #MAX_BACKOFF}), then lets the scan retry. */
@@ -299,21 +318,44 @@ public final class DirectoryService {
     private void submit(ExecutorService workers, Slot slot) {
         metrics.inProcessing().incrementAndGet();
         workers.execute(() -> {
+            boolean handedOn = false;
             try {
-                process(slot);
+                long start = System.nanoTime();
+                Scoring scoring = score(slot);
+                Runnable filing = () -> {
+                    try {
+                        file(slot, scoring, start);
+                    } finally {
+                        metrics.inProcessing().decrementAndGet();
+                        permits.release();
+                    }
+                };
+                handedOn = true;
+                try {
+                    committers.execute(filing);
+                } catch (RejectedExecutionException e) {
+                    filing.run(); // shut down early (an interrupted stop): filed here, as before the hand-off
+                }
             } finally {
-                metrics.inProcessing().decrementAndGet();
-                permits.release();
+                if (!handedOn) {
+                    metrics.inProcessing().decrementAndGet();
+                    permits.release();
+                }
             }
         });
     }
 
-    /** Top-level handler of one bundle: whatever happens, the bundle ends in done/ or failed/. */
-    private void process(Slot slot) {
-        long start = System.nanoTime();
+    /**
+     * What a worker made of a bundle: the scored run to file, or the failed run's result, or
+     * {@code kept}: the environment failed and the bundle stays in processing/.
+     */
+    private record Scoring(RunProcessor.Scored scored, RunResult failed, Path scratch, boolean kept) {
+    }
+
+    /** The worker's half of one bundle: open and score it (nothing durable is written). */
+    private Scoring score(Slot slot) {
         BundleUnit unit = slot.unit();
         Path scratch = slot.dir().resolve(".unpacked");
-        RunResult result;
         try {
             Slot.deleteTree(scratch);
             Path payload = switch (unit.kind()) {
@@ -323,22 +365,48 @@ public final class DirectoryService {
                 case BAG -> slot.dir().resolve(unit.name());
             };
             RunJob job = opener.open(unit.kind(), payload, unit.name(), scratch);
-            result = processor.process(job);
+            return new Scoring(processor.score(job), null, scratch, false);
         } catch (StageException e) {
-            result = RunResult.failed(null, e.failure());
+            return new Scoring(null, RunResult.failed(null, e.failure()), scratch, false);
         } catch (EnvironmentException e) {
             deleteScratch(scratch);
             keep(slot, e);
-            return;
+            return new Scoring(null, null, scratch, true);
         } catch (IOException e) {
             deleteScratch(scratch);
             keep(slot, new EnvironmentException("clear", scratch, e));
-            return;
+            return new Scoring(null, null, scratch, true);
         } catch (RuntimeException e) {
             LOG.error("internal error on bundle={}", unit.slotName(), e);
-            result = RunResult.failed(null, RunFailure.of(Stage.SCORE, e));
+            return new Scoring(null, RunResult.failed(null, RunFailure.of(Stage.SCORE, e)), scratch, false);
         }
-        deleteScratch(scratch);
+    }
+
+    /**
+     * The committer's half of one bundle: files the report (durable report, then durable ledger
+     * line), then moves the bundle to done/ or failed/; whatever happens, the bundle ends there or
+     * stays in processing/ for a retry.
+     */
+    private void file(Slot slot, Scoring scoring, long start) {
+        if (scoring.kept()) {
+            return;
+        }
+        RunResult result = scoring.failed();
+        if (result == null) {
+            try {
+                result = processor.file(scoring.scored());
+            } catch (StageException e) {
+                result = RunResult.failed(null, e.failure());
+            } catch (EnvironmentException e) {
+                deleteScratch(scoring.scratch());
+                keep(slot, e);
+                return;
+            } catch (RuntimeException e) {
+                LOG.error("internal error on bundle={}", slot.unit().slotName(), e);
+                result = RunResult.failed(null, RunFailure.of(Stage.SCORE, e));
+            }
+        }
+        deleteScratch(scoring.scratch());
         Duration took = Duration.ofNanos(System.nanoTime() - start);
         try {
             finish(slot, result);
