@@ -5,7 +5,8 @@ import org.trajeval.core.metric.RpeUnit;
 
 /**
  * The RPE pairs of one pair-selection rule ({@link EveryStart}, {@link Stride}, {@link Walk}), with the
- * sums behind the mean horizon.
+ * sums behind the mean horizon. The count and the sums are final once {@link #errorsInto} has run
+ * (the chunked rules find them in the same pass as the errors).
  */
 abstract class PairRule {
     final AssociatedColumns poses;
