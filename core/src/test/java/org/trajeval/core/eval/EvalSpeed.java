@@ -10,6 +10,8 @@ import org.trajeval.core.io.LoadedTrajectory;
 import org.trajeval.core.io.ReadOptions;
 import org.trajeval.core.io.TrajectoryReader;
 import org.trajeval.core.metric.RpeUnit;
+import org.trajeval.core.report.EvaluationReport;
+import org.trajeval.core.report.ReportJson;
 
 /**
  * Not a test: times the evaluation alone, without reading, in one warm JVM. Reads REF and EST once,
@@ -34,16 +36,16 @@ public final class EvalSpeed {
         EvaluationOptions options = switch (kase) {
             case "evo-se3" -> EvaluationOptions.preset(Convention.EVO, planar).withAlignment(AlignmentModel.SE3);
             case "evo-sim3" -> EvaluationOptions.preset(Convention.EVO, planar).withAlignment(AlignmentModel.SIM3);
-            default -> EvaluationOptions.preset(Convention.LESSON, planar).withAssociation(AssociationMethod.INTERPOLATE)
-                    .withAlignment(planar ? AlignmentModel.SE2 : AlignmentModel.SE3).withRpe(1, RpeUnit.SECONDS);
+            default -> EvaluationOptions.preset(Convention.LESSON, planar)
+                    .withAssociation(AssociationMethod.INTERPOLATE).withAlignment(planar ? AlignmentModel.SE2 : AlignmentModel.SE3).withRpe(1, RpeUnit.SECONDS);
         };
         ThreadMXBean mx = ManagementFactory.getThreadMXBean();
         StringJoiner times = new StringJoiner(" ");
         int hash = 0;
         for (int run = 0; run < runs; run++) {
             long start = mx.getCurrentThreadCpuTime();
-            hash = org.trajeval.core.report.ReportJson.toJson(Evaluator.evaluate(ref, est, options, Parallelism.SEQUENTIAL))
-                    .hashCode();
+            EvaluationReport report = Evaluator.evaluate(ref, est, options, Parallelism.SEQUENTIAL);
+            hash = ReportJson.toJson(report).hashCode();
             times.add(String.valueOf((mx.getCurrentThreadCpuTime() - start) / 1_000_000));
         }
         System.out.println(times + " hash " + Integer.toHexString(hash));
