@@ -18,6 +18,37 @@ final class EveryStart extends PairRule {
         this.frames = unit == RpeUnit.FRAMES;
         this.par = par;
         this.m = poses.size();
+        int chunks = Parallelism.chunks(m);
+        int[] firstWithout = new int[chunks];
+        double[] chunkS = new double[chunks];
+        double[] chunkM = new double[chunks];
+        par.forEachChunk(m, (c, from, to) -> {
+            double s = 0;
+            double len = 0;
+            PathSpan path = new PathSpan(poses, from);
+            int j = frames ? from : firstPartner(from);
+            int i = from;
+            for (; i < to; i++) {
+                j = partner(i, j);
+                if (j >= m || j == i && !frames) {
+                    break;
+                }
+                s += poses.stamp(j) - poses.stamp(i);
+                len += path.between(i, j);
+            }
+            firstWithout[c] = i;
+            chunkS[c] = s;
+            chunkM[c] = len;
+        });
+        pairs = m;
+        for (int c = 0; c < chunks; c++) {
+            sumS += chunkS[c];
+            sumM += chunkM[c];
+            if (firstWithout[c] < Math.min((long) (c + 1) * Parallelism.CHUNK, m)) {
+                pairs = firstWithout[c];
+                break;
+            }
+        }
     }
 
     /** @return the partner of start pose i, given the partner j of an earlier start in the same chunk */
@@ -50,47 +81,17 @@ final class EveryStart extends PairRule {
         return lo;
     }
 
-    /**
-     * One pass per chunk of start poses: each pair's partner, its errors and its share of the sums
-     * (the chunk's sums in pose order, then the chunks' in chunk order). The pairs end at the first
-     * start pose without a partner; chunks after it stop at once.
-     */
     @Override
     void errorsInto(double[] trans, double[] rot) {
-        int chunks = Parallelism.chunks(m);
-        int[] firstWithout = new int[chunks];
-        double[] chunkS = new double[chunks];
-        double[] chunkM = new double[chunks];
-        par.forEachChunk(m, (c, from, to) -> {
-            AssociatedColumns.Scratch scratch = new AssociatedColumns.Scratch();
-            double s = 0;
-            double len = 0;
-            PathSpan path = new PathSpan(poses, from);
+        par.forEachChunk(pairs, (c, from, to) -> {
+            AssociatedColumns.Scratch s = new AssociatedColumns.Scratch();
             int j = frames ? from : firstPartner(from);
-            int i = from;
-            for (; i < to; i++) {
+            for (int i = from; i < to; i++) {
                 j = partner(i, j);
-                if (j >= m || j == i && !frames) {
-                    break;
-                }
-                s += poses.stamp(j) - poses.stamp(i);
-                len += path.between(i, j);
-                poses.rpe(i, j, scratch);
-                trans[i] = scratch.transError;
-                rot[i] = scratch.rotError;
+                poses.rpe(i, j, s);
+                trans[i] = s.transError;
+                rot[i] = s.rotError;
             }
-            firstWithout[c] = i;
-            chunkS[c] = s;
-            chunkM[c] = len;
         });
-        pairs = m;
-        for (int c = 0; c < chunks; c++) {
-            sumS += chunkS[c];
-            sumM += chunkM[c];
-            if (firstWithout[c] < Math.min((long) (c + 1) * Parallelism.CHUNK, m)) {
-                pairs = firstWithout[c];
-                break;
-            }
-        }
     }
 }

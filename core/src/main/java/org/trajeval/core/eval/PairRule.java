@@ -5,8 +5,7 @@ import org.trajeval.core.metric.RpeUnit;
 
 /**
  * The RPE pairs of one pair-selection rule ({@link EveryStart}, {@link Stride}, {@link Walk}), with the
- * sums behind the mean horizon. The count and the sums are final once {@link #errorsInto} has run
- * (the chunked rules find them in the same pass as the errors).
+ * sums behind the mean horizon.
  */
 abstract class PairRule {
     final AssociatedColumns poses;

@@ -14,16 +14,10 @@ final class Stride extends PairRule {
         this.par = par;
         int m = poses.size();
         pairs = m > d ? (m - 1) / d : 0; // the p with p d + d < m
-    }
-
-    /** One pass per chunk of pairs: each pair's errors and its share of the sums (in pair order, then chunk order). */
-    @Override
-    void errorsInto(double[] trans, double[] rot) {
         int chunks = Parallelism.chunks(pairs);
         double[] chunkS = new double[chunks];
         double[] chunkM = new double[chunks];
         par.forEachChunk(pairs, (c, from, to) -> {
-            AssociatedColumns.Scratch s = new AssociatedColumns.Scratch();
             double sum = 0;
             double len = 0;
             PathSpan path = new PathSpan(poses, from * d);
@@ -31,9 +25,6 @@ final class Stride extends PairRule {
                 int i = p * d;
                 sum += poses.stamp(i + d) - poses.stamp(i);
                 len += path.between(i, i + d);
-                poses.rpe(i, i + d, s);
-                trans[p] = s.transError;
-                rot[p] = s.rotError;
             }
             chunkS[c] = sum;
             chunkM[c] = len;
@@ -42,5 +33,17 @@ final class Stride extends PairRule {
             sumS += chunkS[c];
             sumM += chunkM[c];
         }
+    }
+
+    @Override
+    void errorsInto(double[] trans, double[] rot) {
+        par.forEachChunk(pairs, (c, from, to) -> {
+            AssociatedColumns.Scratch s = new AssociatedColumns.Scratch();
+            for (int p = from; p < to; p++) {
+                poses.rpe(p * d, p * d + d, s);
+                trans[p] = s.transError;
+                rot[p] = s.rotError;
+            }
+        });
     }
 }
