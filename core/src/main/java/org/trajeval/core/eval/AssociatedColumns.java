@@ -4,6 +4,7 @@ import java.util.Arrays;
 import org.trajeval.core.align.AlignmentTransform;
 import org.trajeval.core.align.PosePairs;
 import org.trajeval.core.assoc.InterpolatedReference;
+import org.trajeval.core.traj.PlanarTrajectory;
 import org.trajeval.core.traj.PositionColumns;
 import org.trajeval.core.traj.Trajectory;
 
@@ -34,9 +35,10 @@ final class AssociatedColumns implements PosePairs {
     private final PositionColumns refPositions;
     private final PositionColumns estPositions;
     /**
-     * ATE rotation errors (rad) computed by {@link #rpe} for its start pose i while the reference
-     * rotation of i is in the thread's cache, NaN where not yet computed; only for an SE(3)
-     * interpolated reference, whose rotations cost a slerp each (8 B per pose against a second slerp).
+     * ATE rotation errors (rad) computed by {@link #rpe} for its start pose i while the rotations of i
+     * are in the thread's window, NaN where not yet computed; for SE(3) pairs only (8 B per pose
+     * against a second slerp for an interpolated reference, or against a second pass that converts
+     * both quaternions of every pose to matrices again for matched pairs).
      */
     private final double[] ateRotation;
     /** The 3x3 kernels for the alignment set last. */
@@ -45,7 +47,7 @@ final class AssociatedColumns implements PosePairs {
     private PlanarErrors planar;
 
     private AssociatedColumns(Trajectory ref, Trajectory est, InterpolatedReference interpolated, int[] refIndex,
-            int[] estIndex, int k0, int m, double off) {
+            int[] estIndex, int k0, int m, double off, Parallelism fill) {
         this.ref = ref;
         this.est = est;
         this.interpolated = interpolated;
@@ -56,9 +58,11 @@ final class AssociatedColumns implements PosePairs {
         this.off = off;
         this.refPositions = interpolated != null ? interpolated : new Mapped(ref, refIndex, 0);
         this.estPositions = new Mapped(est, estIndex, k0);
-        if (interpolated != null && interpolated.isSpatial()) {
-            this.ateRotation = new double[m];
-            Arrays.fill(ateRotation, Double.NaN);
+        boolean spatial = interpolated != null ? interpolated.isSpatial() : !(ref instanceof PlanarTrajectory);
+        if (spatial) {
+            double[] known = new double[m];
+            fill.forEachChunk(m, (c, from, to) -> Arrays.fill(known, from, to, Double.NaN));
+            this.ateRotation = known;
         } else {
             this.ateRotation = null;
         }
@@ -67,13 +71,16 @@ final class AssociatedColumns implements PosePairs {
     /** Estimate poses [k0, k0 + m) paired with the reference interpolated at their stamps (filled by the caller). */
     static AssociatedColumns interpolated(Trajectory ref, Trajectory est, InterpolatedReference interpolated, int k0,
             int m, double off) {
-        return new AssociatedColumns(ref, est, interpolated, null, null, k0, m, off);
+        return new AssociatedColumns(ref, est, interpolated, null, null, k0, m, off, Parallelism.SEQUENTIAL);
     }
 
-    /** Pairs (reference refIndex[k], estimate estIndex[k]) for k &lt; m. */
+    /**
+     * Pairs (reference refIndex[k], estimate estIndex[k]) for k &lt; m; the ATE rotation cache of SE(3)
+     * pairs is set up (first touched) on the threads of {@code par}.
+     */
     static AssociatedColumns matched(Trajectory ref, Trajectory est, int[] refIndex, int[] estIndex, int m,
-            double off) {
-        return new AssociatedColumns(ref, est, null, refIndex, estIndex, 0, m, off);
+            double off, Parallelism par) {
+        return new AssociatedColumns(ref, est, null, refIndex, estIndex, 0, m, off, par);
     }
 
     @Override
@@ -126,6 +133,11 @@ final class AssociatedColumns implements PosePairs {
 
     private int estAt(int k) {
         return estIndex == null ? k0 + k : estIndex[k];
+    }
+
+    /** @return true when the RPE pass left the ATE rotation error of pose k (it is not computed again) */
+    boolean ateRotationKnown(int k) {
+        return ateRotation != null && !Double.isNaN(ateRotation[k]);
     }
 
     /** Sets the alignment applied to the estimate before the errors (identity for model NONE). */

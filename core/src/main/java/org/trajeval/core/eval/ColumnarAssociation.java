@@ -84,7 +84,7 @@ record ColumnarAssociation(AssociatedColumns pairs, int dropped, int droppedRefe
         par.all(() -> distinct[0] = np.distinctEstimate(), () -> distinct[1] = np.distinctReference());
         double[] sampling = referenceSampling(ref, first, last, par);
         return new ColumnarAssociation(
-                AssociatedColumns.matched(ref, est, np.reference(), np.estimate(), m, o.tOffsetS()),
+                AssociatedColumns.matched(ref, est, np.reference(), np.estimate(), m, o.tOffsetS(), par),
                 est.size() - distinct[0], ref.size() - distinct[1], sampling[0], sampling[1],
                 Double.POSITIVE_INFINITY);
     }

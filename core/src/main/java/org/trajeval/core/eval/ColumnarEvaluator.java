@@ -20,8 +20,9 @@ import org.trajeval.core.traj.Trajectory;
  * that are not) take 2x2 blocks of (cos, sin) of the yaws instead of 3x3 matrices ({@link PlanarErrors}).
  *
  * <p>Memory on top of the inputs: the reference interpolated at the estimate stamps (planar 24 B;
- * SE(3) 20 B per pose: its bracket and the ATE rotation errors the RPE computes; none for nearest
- * matching, 8 B of index maps instead), for planar kernels the ATE rotation errors the RPE
+ * SE(3) 20 B per pose: its bracket and the ATE rotation errors the RPE computes; for nearest
+ * matching 8 B of index maps instead, and for SE(3) pairs the ATE rotation errors the RPE computes,
+ * 8 B), for planar kernels the ATE rotation errors the RPE
  * computes (8 B per pose), and two error arrays (16 B per pose) that the RPE and then the ATE fill;
  * every RPE pair and every ATE pose is computed once.
  */

@@ -128,44 +128,57 @@ final class SpatialErrors {
 
     /**
      * The ATE of pairs [from, to) into {@code trans[k]} (m) and {@code rot[k]} (rad), as {@link #ate}
-     * gives them. Without rotation errors from the RPE, poses go two at a time through the window
-     * and {@link Rotations#angles}, so the two angles' long chains overlap.
+     * gives them. A pose whose rotation error the RPE pass left takes only its translation; the
+     * others go two at a time through the window and {@link Rotations#angles}, so the two angles'
+     * long chains overlap.
      */
     void ateInto(int from, int to, double[] trans, double[] rot, AssociatedColumns.Scratch s) {
-        int k = from;
-        if (ateRotation == null) {
-            Window w = s.spatialWindow();
-            double[] v = w.v;
-            for (; k + 1 < to; k += 2) {
-                int o = w.slot(this, k, s);
-                int n = w.slot(this, k + 1, s);
-                trans[k] = distance(v, o);
-                trans[k + 1] = distance(v, n);
-                // R'^T R_ref of poses k and k + 1: rotations at v[o + 12] and v[o]
-                Rotations.angles(dot(v[o + 12], v[o + 15], v[o + 18], v[o], v[o + 3], v[o + 6]),
-                        dot(v[o + 12], v[o + 15], v[o + 18], v[o + 1], v[o + 4], v[o + 7]),
-                        dot(v[o + 12], v[o + 15], v[o + 18], v[o + 2], v[o + 5], v[o + 8]),
-                        dot(v[o + 13], v[o + 16], v[o + 19], v[o], v[o + 3], v[o + 6]),
-                        dot(v[o + 13], v[o + 16], v[o + 19], v[o + 1], v[o + 4], v[o + 7]),
-                        dot(v[o + 13], v[o + 16], v[o + 19], v[o + 2], v[o + 5], v[o + 8]),
-                        dot(v[o + 14], v[o + 17], v[o + 20], v[o], v[o + 3], v[o + 6]),
-                        dot(v[o + 14], v[o + 17], v[o + 20], v[o + 1], v[o + 4], v[o + 7]),
-                        dot(v[o + 14], v[o + 17], v[o + 20], v[o + 2], v[o + 5], v[o + 8]),
-                        dot(v[n + 12], v[n + 15], v[n + 18], v[n], v[n + 3], v[n + 6]),
-                        dot(v[n + 12], v[n + 15], v[n + 18], v[n + 1], v[n + 4], v[n + 7]),
-                        dot(v[n + 12], v[n + 15], v[n + 18], v[n + 2], v[n + 5], v[n + 8]),
-                        dot(v[n + 13], v[n + 16], v[n + 19], v[n], v[n + 3], v[n + 6]),
-                        dot(v[n + 13], v[n + 16], v[n + 19], v[n + 1], v[n + 4], v[n + 7]),
-                        dot(v[n + 13], v[n + 16], v[n + 19], v[n + 2], v[n + 5], v[n + 8]),
-                        dot(v[n + 14], v[n + 17], v[n + 20], v[n], v[n + 3], v[n + 6]),
-                        dot(v[n + 14], v[n + 17], v[n + 20], v[n + 1], v[n + 4], v[n + 7]),
-                        dot(v[n + 14], v[n + 17], v[n + 20], v[n + 2], v[n + 5], v[n + 8]), rot, k);
+        Window w = s.spatialWindow();
+        double[] v = w.v;
+        double[] two = s.angles;
+        int waiting = -1; // a pose without its rotation error, waiting for a second one
+        for (int k = from; k < to; k++) {
+            if (ateRotation != null && !Double.isNaN(ateRotation[k])) {
+                ate(k, s);
+                trans[k] = s.transError;
+                rot[k] = s.rotError;
+                continue;
             }
+            if (waiting < 0) {
+                waiting = k;
+                continue;
+            }
+            int o = w.slot(this, waiting, s);
+            int n = w.slot(this, k, s);
+            trans[waiting] = distance(v, o);
+            trans[k] = distance(v, n);
+            // R'^T R_ref of poses waiting and k: rotations at v[o + 12] and v[o]
+            Rotations.angles(dot(v[o + 12], v[o + 15], v[o + 18], v[o], v[o + 3], v[o + 6]),
+                    dot(v[o + 12], v[o + 15], v[o + 18], v[o + 1], v[o + 4], v[o + 7]),
+                    dot(v[o + 12], v[o + 15], v[o + 18], v[o + 2], v[o + 5], v[o + 8]),
+                    dot(v[o + 13], v[o + 16], v[o + 19], v[o], v[o + 3], v[o + 6]),
+                    dot(v[o + 13], v[o + 16], v[o + 19], v[o + 1], v[o + 4], v[o + 7]),
+                    dot(v[o + 13], v[o + 16], v[o + 19], v[o + 2], v[o + 5], v[o + 8]),
+                    dot(v[o + 14], v[o + 17], v[o + 20], v[o], v[o + 3], v[o + 6]),
+                    dot(v[o + 14], v[o + 17], v[o + 20], v[o + 1], v[o + 4], v[o + 7]),
+                    dot(v[o + 14], v[o + 17], v[o + 20], v[o + 2], v[o + 5], v[o + 8]),
+                    dot(v[n + 12], v[n + 15], v[n + 18], v[n], v[n + 3], v[n + 6]),
+                    dot(v[n + 12], v[n + 15], v[n + 18], v[n + 1], v[n + 4], v[n + 7]),
+                    dot(v[n + 12], v[n + 15], v[n + 18], v[n + 2], v[n + 5], v[n + 8]),
+                    dot(v[n + 13], v[n + 16], v[n + 19], v[n], v[n + 3], v[n + 6]),
+                    dot(v[n + 13], v[n + 16], v[n + 19], v[n + 1], v[n + 4], v[n + 7]),
+                    dot(v[n + 13], v[n + 16], v[n + 19], v[n + 2], v[n + 5], v[n + 8]),
+                    dot(v[n + 14], v[n + 17], v[n + 20], v[n], v[n + 3], v[n + 6]),
+                    dot(v[n + 14], v[n + 17], v[n + 20], v[n + 1], v[n + 4], v[n + 7]),
+                    dot(v[n + 14], v[n + 17], v[n + 20], v[n + 2], v[n + 5], v[n + 8]), two, 0);
+            rot[waiting] = two[0];
+            rot[k] = two[1];
+            waiting = -1;
         }
-        for (; k < to; k++) {
-            ate(k, s);
-            trans[k] = s.transError;
-            rot[k] = s.rotError;
+        if (waiting >= 0) {
+            ate(waiting, s);
+            trans[waiting] = s.transError;
+            rot[waiting] = s.rotError;
         }
     }
 
@@ -178,8 +191,8 @@ final class SpatialErrors {
     }
 
     /**
-     * The RPE of pair (i, j) into {@code s.transError} (m) and {@code s.rotError} (rad); for an
-     * SE(3) interpolated reference also the ATE rotation error of pose i, from the rotations in hand.
+     * The RPE of pair (i, j) into {@code s.transError} (m) and {@code s.rotError} (rad); for SE(3)
+     * pairs also the ATE rotation error of pose i, from the rotations in hand.
      */
     void rpe(int i, int j, AssociatedColumns.Scratch s) {
         Window w = s.spatialWindow();

@@ -128,6 +128,6 @@ class PathSpanTest {
             index[k] = k;
         }
         SpatialTrajectory traj = SpatialTrajectory.of(t, x, y, z, qw, new double[n], new double[n], new double[n]);
-        return AssociatedColumns.matched(traj, traj, index, index, n, 0.0);
+        return AssociatedColumns.matched(traj, traj, index, index, n, 0.0, Parallelism.SEQUENTIAL);
     }
 }

@@ -114,7 +114,8 @@ class PlanarErrorsTest {
         }
         TimeAssociation.NearestPairs np = TimeAssociation.nearestPairs(ref, est,
                 new AssociationOptions(AssociationMethod.NEAREST, 0.02, 0.0, OverlapPolicy.CROP), "gt", "est");
-        return AssociatedColumns.matched(ref, est, np.reference(), np.estimate(), np.count(), 0.0);
+        return AssociatedColumns.matched(ref, est, np.reference(), np.estimate(), np.count(), 0.0,
+                Parallelism.SEQUENTIAL);
     }
 
     private static void sameAte(AssociatedColumns fast, AssociatedColumns matrix, String what) {

@@ -25,8 +25,7 @@ import org.trajeval.core.traj.Trajectory;
  * zero (the same rotations), tiny (the small-angle series), half turns and near half turns (Shepperd's
  * diagonal branches), and KITTI-like matrix trajectories orthonormal only to 1e-6 (polar factor
  * first), and planar pairs through the 3x3 kernels; every alignment model, interpolated and nearest association, the pairs of every RPE rule,
- * and the ATE both computed on its own and taken from the RPE pass (start poses of an interpolated
- * reference).
+ * and the ATE both computed on its own and taken from the RPE pass (start poses of SE(3) pairs).
  */
 class SpatialKernelsTest {
     private static final String[] KINDS = {"ordinary", "same rotations", "tiny errors", "half turn",
@@ -73,24 +72,32 @@ class SpatialKernelsTest {
     }
 
     @Test
-    void theRpePassLeavesTheStartPosesAteRotationForAnInterpolatedReference() {
+    void theRpePassLeavesTheStartPosesAteRotationForSpatialPairs() {
         // the route "ATE rotation taken from the RPE pass" must really be taken, or the test above
-        // would compare only the computed route
-        Random rnd = new Random(1511);
-        SpatialTrajectory ref = reference(rnd, 500, 0);
-        SpatialTrajectory est = estimate(rnd, ref, 0);
-        AssociatedColumns fast = associate(ref, est, AssociationMethod.INTERPOLATE);
-        AlignmentTransform tf = Alignment.fit(AlignmentModel.SE3, fast, -1, "est");
-        fast.align(tf);
-        AssociatedColumns.Scratch s = new AssociatedColumns.Scratch();
-        fast.rpe(3, 9, s);
-        fast.ate(3, s);
-        double viaRpe = s.rotError;
-        AssociatedColumns computed = associate(ref, est, AssociationMethod.INTERPOLATE);
-        computed.align(tf);
-        computed.ate(3, s);
-        assertEquals(Double.doubleToRawLongBits(s.rotError), Double.doubleToRawLongBits(viaRpe));
-        assertEquals(new MatrixKernelsAsTheyWere(fast, tf).ate(3)[1], viaRpe, 0.0);
+        // would compare only the computed route: for an interpolated reference and for matched pairs
+        for (AssociationMethod assoc : new AssociationMethod[] {AssociationMethod.INTERPOLATE,
+            AssociationMethod.NEAREST}) {
+            Random rnd = new Random(1511);
+            SpatialTrajectory ref = reference(rnd, 500, 0);
+            SpatialTrajectory est = estimate(rnd, ref, 0);
+            AssociatedColumns fast = associate(ref, est, assoc);
+            AlignmentTransform tf = Alignment.fit(AlignmentModel.SE3, fast, -1, "est");
+            fast.align(tf);
+            AssociatedColumns.Scratch s = new AssociatedColumns.Scratch();
+            fast.rpe(3, 9, s);
+            // a window that never met pose 3: only the value the RPE left can answer without computing
+            AssociatedColumns.Scratch fresh = new AssociatedColumns.Scratch();
+            double[] trans = new double[fast.size()];
+            double[] rot = new double[fast.size()];
+            fast.ateInto(3, 4, trans, rot, fresh);
+            double viaRpe = rot[3];
+            AssociatedColumns computed = associate(ref, est, assoc);
+            computed.align(tf);
+            computed.ate(3, s);
+            assertEquals(Double.doubleToRawLongBits(s.rotError), Double.doubleToRawLongBits(viaRpe), assoc.toString());
+            assertEquals(new MatrixKernelsAsTheyWere(fast, tf).ate(3)[1], viaRpe, 0.0, assoc.toString());
+            assertTrue(fast.ateRotationKnown(3) && !computed.ateRotationKnown(3), assoc.toString());
+        }
     }
 
     private static AssociatedColumns associate(Trajectory ref, Trajectory est, AssociationMethod assoc) {
@@ -103,7 +110,8 @@ class SpatialKernelsTest {
         }
         TimeAssociation.NearestPairs np = TimeAssociation.nearestPairs(ref, est,
                 new AssociationOptions(AssociationMethod.NEAREST, 0.02, 0.0, OverlapPolicy.CROP), "gt", "est");
-        return AssociatedColumns.matched(ref, est, np.reference(), np.estimate(), np.count(), 0.0);
+        return AssociatedColumns.matched(ref, est, np.reference(), np.estimate(), np.count(), 0.0,
+                Parallelism.SEQUENTIAL);
     }
 
     /** Pose by pose, then in ranges as the evaluator's chunks ask for them (two at a time, odd ends). */
