@@ -2,6 +2,7 @@ package org.trajeval.store;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.trajeval.core.io.sqlite.NativeLibraryChild.files;
 
 import java.io.BufferedReader;
 import java.io.IOException;
@@ -9,12 +10,11 @@ import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
-import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.trajeval.core.io.sqlite.NativeLibraryChild;
 
 /**
  * The store configures the SQLite driver's native library (core's {@code SqliteNativeLibrary},
@@ -27,25 +27,10 @@ class StoreSqliteLibraryTest {
     Path dir;
 
     private Process child(Path tmp, Path cache, boolean wait) throws IOException {
-        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Xshare:auto", "-XX:TieredStopAtLevel=1", "-Djava.io.tmpdir=" + tmp,
-                "-cp", System.getProperty("java.class.path"), StoreStart.class.getName(),
-                dir.resolve("store.db").toString()));
-        if (wait) {
-            cmd.add("wait");
-        }
-        ProcessBuilder pb = new ProcessBuilder(cmd);
-        pb.environment().put("XDG_CACHE_HOME", cache.toString());
-        pb.environment().remove("JAVA_TOOL_OPTIONS");
-        pb.environment().remove("_JAVA_OPTIONS");
-        return pb.start();
+        String db = dir.resolve("store.db").toString();
+        return NativeLibraryChild.start(tmp, cache, List.of(), StoreStart.class, wait ? List.of(db, "wait") : List.of(db));
     }
 
-    private static List<Path> files(Path root) throws IOException {
-        try (Stream<Path> s = Files.walk(root)) {
-            return s.filter(Files::isRegularFile).toList();
-        }
-    }
 
     @Test
     void aRunningAndAKilledStoreLeaveNothingInTheTempFolder() throws Exception {

@@ -139,9 +139,7 @@ final class SpatialErrors {
         int waiting = -1; // a pose without its rotation error, waiting for a second one
         for (int k = from; k < to; k++) {
             if (ateRotation != null && !Double.isNaN(ateRotation[k])) {
-                ate(k, s);
-                trans[k] = s.transError;
-                rot[k] = s.rotError;
+                ateInto(k, trans, rot, s);
                 continue;
             }
             if (waiting < 0) {
@@ -176,10 +174,15 @@ final class SpatialErrors {
             waiting = -1;
         }
         if (waiting >= 0) {
-            ate(waiting, s);
-            trans[waiting] = s.transError;
-            rot[waiting] = s.rotError;
+            ateInto(waiting, trans, rot, s);
         }
+    }
+
+    /** The ATE of pair k alone ({@link #ate}) into {@code trans[k]} (m) and {@code rot[k]} (rad). */
+    private void ateInto(int k, double[] trans, double[] rot, AssociatedColumns.Scratch s) {
+        ate(k, s);
+        trans[k] = s.transError;
+        rot[k] = s.rotError;
     }
 
     /** @return |p' - p_ref| (m) of the pose whose window values start at v[o] */

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.trajeval.core.io.sqlite.NativeLibraryChild.files;
 
 import java.io.BufferedReader;
 import java.io.IOException;
@@ -12,12 +13,10 @@ import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.TimeUnit;
-import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -44,33 +43,15 @@ class SqliteNativeLibraryTest {
     }
 
     private Process child(Path tmp, Path cache, boolean wait, String... jvmOptions) throws IOException {
-        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Xshare:auto", "-XX:TieredStopAtLevel=1", "-Djava.io.tmpdir=" + tmp));
-        cmd.addAll(List.of(jvmOptions));
-        cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), SqliteStart.class.getName(),
-                dir.resolve("test.db").toString()));
-        if (wait) {
-            cmd.add("wait");
-        }
-        ProcessBuilder pb = new ProcessBuilder(cmd);
-        pb.environment().put("XDG_CACHE_HOME", cache.toString());
-        pb.environment().remove("JAVA_TOOL_OPTIONS");
-        pb.environment().remove("_JAVA_OPTIONS");
-        return pb.start();
+        String db = dir.resolve("test.db").toString();
+        return NativeLibraryChild.start(tmp, cache, List.of(jvmOptions), SqliteStart.class,
+                wait ? List.of(db, "wait") : List.of(db));
     }
 
     private static List<String> lines(InputStream in) throws IOException {
         return new String(in.readAllBytes(), StandardCharsets.UTF_8).lines().toList();
     }
 
-    private static List<Path> files(Path root) throws IOException {
-        if (!Files.exists(root)) {
-            return List.of();
-        }
-        try (Stream<Path> s = Files.walk(root)) {
-            return s.filter(Files::isRegularFile).toList();
-        }
-    }
 
     private static byte[] jarCopy(String platform) throws IOException {
         try (InputStream in = SqliteNativeLibraryTest.class.getClassLoader()
