@@ -12,8 +12,6 @@ import ch.qos.logback.core.read.ListAppender;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.IOException;
-import java.io.InputStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.FileTime;
@@ -30,6 +28,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.slf4j.LoggerFactory;
 import org.trajeval.pipeline.EscapedMessageConverter;
 import org.trajeval.pipeline.Fixtures;
+import org.trajeval.pipeline.LogSetup;
 import org.trajeval.pipeline.ReportStore;
 import org.trajeval.pipeline.RunProcessor;
 import org.trajeval.pipeline.StandInScorer;
@@ -174,9 +173,7 @@ class DirectoryHardeningTest {
         e.setArgumentArray(new Object[] {"evil\n2026-11-23T00:00:00Z INFO forged \u001b]0;PWNED\u0007", "unpack"});
         String line = new EscapedMessageConverter().convert(e);
         assertEquals("failed bundle=evil\\n2026-11-23T00:00:00Z INFO forged \\e]0;PWNED\\a stage=unpack", line);
-        try (InputStream in = DirectoryService.class.getResourceAsStream("/logback.xml")) {
-            String config = new String(in.readAllBytes(), StandardCharsets.UTF_8);
-            assertTrue(config.contains("%emsg%n") && !config.contains("%msg"), "the text pattern uses %emsg");
-        }
+        assertTrue(LogSetup.TEXT_PATTERN.contains("%emsg%n") && !LogSetup.TEXT_PATTERN.contains("%msg"),
+                "the text pattern uses %emsg");
     }
 }

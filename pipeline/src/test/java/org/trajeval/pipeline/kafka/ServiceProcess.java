@@ -44,9 +44,7 @@ final class ServiceProcess implements AutoCloseable {
             throws IOException {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Xmx256m", "-XX:TieredStopAtLevel=1",
-                "-Dlogback.configurationFile=" + Path.of(System.getProperty("trajeval.projectDir", "."))
-                        .resolve("src/main/resources/logback.xml"),
-                "-cp", System.getProperty("trajeval.testClasspath", System.getProperty("java.class.path")),
+                "-cp", org.trajeval.pipeline.LauncherClasspath.withoutTestLogging(),
                 PipelineCommand.class.getName(), "kafka", "--root", root.toString(), "--http-port", "0",
                 "--bootstrap-servers", bootstrap, "--workers", "2"));
         cmd.addAll(args);
