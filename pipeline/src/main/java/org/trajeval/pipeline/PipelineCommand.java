@@ -4,6 +4,7 @@ import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.time.Clock;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
@@ -32,8 +33,6 @@ import picocli.CommandLine.Option;
  */
 @Command(name = "trajeval-pipeline", mixinStandardHelpOptions = true, versionProvider = PipelineCommand.VersionProvider.class,
         description = "Turns finished robot runs into metric reports, from a folder or from Kafka.",
-        subcommands = {PipelineCommand.Watch.class, PipelineCommand.KafkaCmd.class, PipelineCommand.Send.class,
-            PipelineCommand.Tail.class, PipelineCommand.Republish.class, PipelineCommand.ConfigCmd.class},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success (watch --drain: every bundle succeeded); also watch and kafka stopped by SIGTERM/SIGINT", "1:internal error",
             "2:bad configuration or usage", "4:watch --drain: some bundles were put in failed/",
@@ -42,6 +41,10 @@ import picocli.CommandLine.Option;
             "7:watch --drain: work left unfinished because the service's own disk or folders failed (full, "
                 + "read-only); the bundles stay in processing/ or incoming/ and are retried at the next start"})
 public final class PipelineCommand implements Runnable {
+    /** The subcommands, in the order of the help text. */
+    private static final List<Class<?>> SUBCOMMANDS = List.of(Watch.class, KafkaCmd.class, Send.class, Tail.class,
+            Republish.class, ConfigCmd.class);
+
     /** Exit code of {@code watch --drain} when some bundles failed. */
     public static final int SOME_FAILED = 4;
 
@@ -67,12 +70,32 @@ public final class PipelineCommand implements Runnable {
 
     /** Entry point of the launcher. */
     public static void main(String[] args) {
-        System.exit(newCommandLine(c -> new CoreRunScorer(c.limits().maxFileBytes()), System.getenv()).execute(args));
+        System.exit(newCommandLine(c -> new CoreRunScorer(c.limits().maxFileBytes()), System.getenv(), args).execute(args));
     }
 
-    /** @return the configured command line */
+    /** @return the configured command line, every subcommand in it */
     public static CommandLine newCommandLine(Function<PipelineConfig, RunScorer> scorers, Map<String, String> env) {
+        return newCommandLine(scorers, env, new String[0]);
+    }
+
+    /**
+     * @param args the arguments it will run: when the first names a subcommand, only that one is put in
+     *     picocli's model (picocli reads every option of a subcommand when it is added: issue 15, part of
+     *     the service's start); otherwise (help, version, usage errors) every subcommand, in help order
+     * @return the configured command line
+     */
+    public static CommandLine newCommandLine(Function<PipelineConfig, RunScorer> scorers, Map<String, String> env,
+            String[] args) {
         CommandLine cl = new CommandLine(new PipelineCommand(scorers, env));
+        Class<?> invoked = null;
+        for (Class<?> c : SUBCOMMANDS) {
+            if (args.length > 0 && c.getAnnotation(Command.class).name().equals(args[0])) {
+                invoked = c;
+            }
+        }
+        for (Class<?> c : invoked == null ? SUBCOMMANDS : List.of(invoked)) {
+            cl.addSubcommand(c);
+        }
         cl.setExecutionExceptionHandler((ex, c, parsed) -> {
             PrintWriter err = c.getErr();
             if (ex instanceof BrokerFailure f) {
@@ -91,7 +114,7 @@ public final class PipelineCommand implements Runnable {
             err.flush();
             return 1;
         });
-        cl.setParameterExceptionHandler((ex, args) -> {
+        cl.setParameterExceptionHandler((ex, unparsed) -> {
             ex.getCommandLine().getErr().println("trajeval-pipeline: " + ex.getMessage());
             ex.getCommandLine().getErr().println("Try '" + ex.getCommandLine().getCommandSpec().qualifiedName()
                     + " --help' for usage.");
