@@ -3,11 +3,13 @@
 # the same seeded files, checks that their numbers agree, and writes the table into
 # README.md (between the bench-table markers) and bench/results/bench.{md,json}.
 #
-#   bench/run-benchmarks.sh [--sizes 10000,100000,1000000,10000000] [--runs 3]
-#                           [--max-evo 1000000] [--max-check 100000] [--no-readme]
+#   bench/run-benchmarks.sh [--sizes 10000,100000,1000000,10000000] [--runs 3] [--runs-at 1000000=9]
+#                           [--max-evo 1000000] [--max-check 100000] [--quiet-wait 10] [--no-readme]
 #
 # --max-evo N: largest pair evo is timed on (evo on 10^7 poses takes ~5 min and ~13 GiB per run).
 # --max-check N: largest 3D pair on which trajeval's evo convention is checked against evo.
+# --runs-at POSES=RUNS: runs for one size instead of --runs (repeatable; the noisy 10^6 row wants 9).
+# --quiet-wait S: before each run of each tool, wait up to S s (default 10) for 0.5 s of idle machine.
 # --recheck: only re-run the agreement checks on the outputs of the last run (no timing).
 # Needs python3 with venv, /usr/bin/time, taskset; PyPI for the first run (evo, numpy, pandas).
 set -euo pipefail

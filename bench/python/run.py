@@ -1,10 +1,17 @@
 """Runs trajeval, the vectorised numpy lesson and evo alternately on the same seeded files,
 checks their numbers agree where their conventions agree, and writes the table.
 
-Timing: /usr/bin/time -v around each process (wall clock and peak RSS), R runs per tool and
-size, tools alternated (the starting tool rotates each run), median reported. Throughput is
-estimate poses / median wall time; memory per pose is (peak RSS - RSS of the same tool on a
+Timing: /usr/bin/time -v around each process (wall clock, user + sys CPU, peak RSS), R runs per
+tool and size, tools alternated (the starting tool rotates each run), median reported. Throughput
+is estimate poses / median wall time; memory per pose is (peak RSS - RSS of the same tool on a
 1000-pose pair) / poses.  Called by bench/run-benchmarks.sh, which prepares the venv and build.
+
+Other processes: trajeval keeps both cores busy (about 2.3 s of CPU in 1.25 s at 10^6) while the
+numpy lesson uses about one (1.5 s in 1.0 s), so any other process on the machine slows trajeval's
+wall time more than numpy's. Before every run of every tool the script waits (up to --quiet-wait
+seconds) until the machine has been idle for half a second, and it records the CPU time other
+processes used during each run (/proc/stat's busy time minus the tool's own user + sys), so a
+table says how disturbed its minutes were. The same rule for every tool: it favours neither.
 """
 import argparse
 import datetime
@@ -15,6 +22,7 @@ import re
 import statistics
 import subprocess
 import sys
+import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 LESSON_OPTS = ["--convention", "lesson", "--association", "interpolate", "--align", "se2",
@@ -25,11 +33,39 @@ def sh(cmd, **kw):
     return subprocess.run(cmd, check=True, **kw)
 
 
+def busy_seconds():
+    """CPU seconds all processors have spent busy since boot (/proc/stat: user + nice + system +
+    irq + softirq + steal, in USER_HZ ticks)."""
+    with open("/proc/stat") as f:
+        v = [int(x) for x in f.readline().split()[1:]]
+    return (v[0] + v[1] + v[2] + v[5] + v[6] + v[7]) / os.sysconf("SC_CLK_TCK")
+
+
+def wait_quiet(limit_s, window_s=0.5, idle_cores=0.1):
+    """Waits until other processes used under idle_cores x window_s of CPU during one window, or
+    until limit_s has passed; returns the seconds waited."""
+    start = time.monotonic()
+    while time.monotonic() - start < limit_s:
+        b0 = busy_seconds()
+        time.sleep(window_s)
+        if busy_seconds() - b0 < idle_cores * window_s:
+            break
+    return time.monotonic() - start
+
+
+def load1():
+    with open("/proc/loadavg") as f:
+        return float(f.read().split()[0])
+
+
 def timed(cmd, out_path, log_path, env=None):
-    """Runs cmd under /usr/bin/time -v; returns (wall s, peak RSS bytes)."""
+    """Runs cmd under /usr/bin/time -v; returns (wall s, peak RSS bytes, user + sys CPU s of cmd,
+    CPU s other processes used meanwhile)."""
     tfile = log_path + ".time"
+    b0 = busy_seconds()
     with open(out_path, "w") as out, open(log_path, "w") as err:
         r = subprocess.run(["/usr/bin/time", "-v", "-o", tfile] + cmd, stdout=out, stderr=err, env=env)
+    busy = busy_seconds() - b0
     if r.returncode != 0:
         raise SystemExit(f"failed ({r.returncode}): {' '.join(cmd)}; see {log_path}")
     text = open(tfile).read()
@@ -37,7 +73,8 @@ def timed(cmd, out_path, log_path, env=None):
     parts = [float(p) for p in wall.split(":")]
     secs = parts[-1] + 60 * parts[-2] + (3600 * parts[-3] if len(parts) > 2 else 0)
     rss = int(re.search(r"Maximum resident set size \(kbytes\): (\d+)", text).group(1)) * 1024
-    return secs, rss
+    cpu = sum(float(re.search(rf"{k} time \(seconds\): (\S+)", text).group(1)) for k in ("User", "System"))
+    return secs, rss, cpu, max(0.0, busy - cpu)
 
 
 def fmt_n(n):
@@ -81,14 +118,19 @@ class Bench:
         return tools
 
     def run_tool(self, name, cmds, n, run):
-        wall, rss = 0.0, 0
+        """Returns a sample {wall_s, rss_bytes, cpu_s, other_cpu_s, load1, waited_s} and the output path."""
+        x = {"wall_s": 0.0, "rss_bytes": 0, "cpu_s": 0.0, "other_cpu_s": 0.0}
         slug = re.sub(r"[^a-z0-9]+", "-", name.lower()).strip("-")
+        x["waited_s"] = wait_quiet(self.a.quiet_wait) if self.a.quiet_wait > 0 else 0.0
+        x["load1"] = load1()
         for k, cmd in enumerate(cmds):
             base = f"{self.work}/{slug}_{n}_{run}_{k}"
-            w, r = timed(cmd, base + ".out", base + ".log")
-            wall += w
-            rss = max(rss, r)
-        return wall, rss, f"{self.work}/{slug}_{n}_{run}_0.out"
+            w, r, c, o = timed(cmd, base + ".out", base + ".log")
+            x["wall_s"] += w
+            x["rss_bytes"] = max(x["rss_bytes"], r)
+            x["cpu_s"] += c
+            x["other_cpu_s"] += o
+        return x, f"{self.work}/{slug}_{n}_{run}_0.out"
 
     def baseline(self):
         n = 1000
@@ -96,7 +138,7 @@ class Bench:
         self.gen(n, "planar-tum")
         base = {}
         for name, cmds in self.tools(n).items():
-            rs = [self.run_tool(name, cmds, n, r)[1] for r in range(3)]
+            rs = [self.run_tool(name, cmds, n, r)[0]["rss_bytes"] for r in range(3)]
             base[name] = statistics.median(rs)
         return base
 
@@ -170,27 +212,35 @@ class Bench:
             names = list(tools)
             samples = {k: [] for k in names}
             outputs = {}
-            for run in range(a.runs):
+            runs = a.runs_at.get(n, a.runs)
+            for run in range(runs):
                 order = names[run % len(names):] + names[:run % len(names)]
                 for name in order:
-                    w, r, out = self.run_tool(name, tools[name], n, run)
-                    samples[name].append((w, r))
+                    x, out = self.run_tool(name, tools[name], n, run)
+                    samples[name].append(x)
                     outputs[name] = out
-                    print(f"  {fmt_n(n):>5} run {run + 1}/{a.runs} {name:20s} {w:8.2f} s "
-                          f"{r / 2**20:8.0f} MiB", flush=True)
+                    print(f"  {fmt_n(n):>5} run {run + 1}/{runs} {name:20s} {x['wall_s']:8.2f} s "
+                          f"{x['rss_bytes'] / 2**20:8.0f} MiB  CPU {x['cpu_s']:6.2f} s  others {x['other_cpu_s']:5.2f} s  "
+                          f"load {x['load1']:.2f}" + (f"  (waited {x['waited_s']:.1f} s)" if x["waited_s"] >= 1 else ""),
+                          flush=True)
             checks[n] = self.agreement(n, outputs)
             for k, v in checks[n].items():
                 print(f"  {fmt_n(n):>5} agreement with {k}: {'OK' if v['ok'] else 'MISMATCH'}\n" + v["detail"])
-            t_ref = statistics.median(w for w, _ in samples["trajeval (1 core)"])
+            t_ref = statistics.median(x["wall_s"] for x in samples["trajeval (1 core)"])
             for name in names:
-                wall = statistics.median(w for w, _ in samples[name])
-                rss = statistics.median(r for _, r in samples[name])
-                rows.append({"poses": n, "tool": name, "median_wall_s": wall,
-                             "walls_s": [w for w, _ in samples[name]], "peak_rss_bytes": rss,
+                col = {k: [x[k] for x in samples[name]] for k in samples[name][0]}
+                wall = statistics.median(col["wall_s"])
+                rss = statistics.median(col["rss_bytes"])
+                rows.append({"poses": n, "tool": name, "runs": len(col["wall_s"]), "median_wall_s": wall,
+                             "walls_s": col["wall_s"], "peak_rss_bytes": rss,
+                             "median_cpu_s": statistics.median(col["cpu_s"]), "cpus_s": col["cpu_s"],
+                             "median_other_cpu_s": statistics.median(col["other_cpu_s"]),
+                             "other_cpus_s": col["other_cpu_s"], "loads1": col["load1"],
                              "poses_per_s": n / wall, "bytes_per_pose_above_baseline": (rss - base[name]) / n,
                              "baseline_rss_bytes": base[name], "time_ratio_vs_trajeval_1core": wall / t_ref})
         result = {"date": datetime.datetime.now().astimezone().isoformat(timespec="seconds"),
-                  "machine": machine(), "runs": a.runs, "max_evo": a.max_evo, "max_check": a.max_check,
+                  "machine": machine(), "runs": a.runs, "runs_at": {str(k): v for k, v in a.runs_at.items()},
+                  "quiet_wait_s": a.quiet_wait, "max_evo": a.max_evo, "max_check": a.max_check,
                   "seed": a.seed, "rows": rows, "agreement": {str(k): v for k, v in checks.items()}}
         self.finish(result, checks)
 
@@ -215,13 +265,21 @@ def markdown(r):
     m = r["machine"]
     lines = [f"Measured {r['date']} on {m['cpu']}, {m['logical_cpus']} logical CPUs, {m['memory']} RAM, "
              f"{m['os']}; {m['java']}; Python {m['python']}, numpy {m['numpy']}, pandas {m['pandas']}, "
-             f"evo {m['evo']}. Median of {r['runs']} runs per tool and size, tools alternated; "
-             f"evo run up to {fmt_n(r['max_evo'])} poses (`--max-evo`).",
+             f"evo {m['evo']}. Median of {runs_text(r)} per tool and size, tools alternated"
+             + (f", each run started once the machine had been idle for 0.5 s (waiting at most "
+                f"{r['quiet_wait_s']:g} s; `--quiet-wait`)" if r.get("quiet_wait_s") else "")
+             + f"; evo run up to {fmt_n(r['max_evo'])} poses (`--max-evo`). CPU is the tool's user + sys; "
+             "others' CPU is what other processes used during its runs (median; a busy minute slows the "
+             "tool that uses both cores most).",
              "",
-             "| poses | tool | median wall (s) | poses/s | peak RSS (MiB) | B/pose above baseline | time / trajeval (1 core) |",
-             "| ---: | --- | ---: | ---: | ---: | ---: | ---: |"]
+             "| poses | tool | median wall (s) | wall min-max (s) | CPU (s) | others' CPU (s) | poses/s | peak RSS (MiB) "
+             "| B/pose above baseline | time / trajeval (1 core) |",
+             "| ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"]
     for row in r["rows"]:
+        cpu = f"{row['median_cpu_s']:.2f}" if "median_cpu_s" in row else "-"
+        other = f"{row['median_other_cpu_s']:.2f}" if "median_other_cpu_s" in row else "-"
         lines.append(f"| {fmt_n(row['poses'])} | {row['tool']} | {row['median_wall_s']:.2f} | "
+                     f"{min(row['walls_s']):.2f}-{max(row['walls_s']):.2f} | {cpu} | {other} | "
                      f"{row['poses_per_s']:,.0f} | {row['peak_rss_bytes'] / 2**20:,.0f} | "
                      f"{row['bytes_per_pose_above_baseline']:,.0f} | {row['time_ratio_vs_trajeval_1core']:.1f}x |")
     lines.append("")
@@ -241,6 +299,13 @@ def markdown(r):
     return "\n".join(lines) + "\n"
 
 
+def runs_text(r):
+    by_size = {int(k): v for k, v in r.get("runs_at", {}).items()}
+    if not by_size:
+        return f"{r['runs']} runs"
+    return f"{r['runs']} runs (" + ", ".join(f"{fmt_n(k)}: {v}" for k, v in sorted(by_size.items())) + ")"
+
+
 def splice(readme, table):
     start, end = "<!-- bench-table:start -->", "<!-- bench-table:end -->"
     text = open(readme).read()
@@ -257,6 +322,10 @@ def parse_args():
     ap.add_argument("--python", default=sys.executable)
     ap.add_argument("--sizes", default="10000,100000,1000000,10000000")
     ap.add_argument("--runs", type=int, default=3)
+    ap.add_argument("--runs-at", dest="runs_at_list", action="append", default=[], metavar="POSES=RUNS",
+                    help="runs for one size instead of --runs, e.g. 1000000=9 (repeatable)")
+    ap.add_argument("--quiet-wait", type=float, default=10.0, metavar="SECONDS",
+                    help="before each run, wait up to this long for 0.5 s of idle machine (0: never wait)")
     ap.add_argument("--max-evo", type=int, default=1_000_000)
     ap.add_argument("--max-check", type=int, default=100_000)
     ap.add_argument("--seed", type=int, default=20240605)
@@ -267,6 +336,12 @@ def parse_args():
                     help="re-run only the agreement checks on the saved outputs of the last run")
     a = ap.parse_args()
     a.sizes = [int(float(s)) for s in a.sizes.split(",")]
+    a.runs_at = {}
+    for item in a.runs_at_list:
+        size, _, runs = item.partition("=")
+        if not runs.isdigit() or int(runs) < 1:
+            ap.error(f"--runs-at wants POSES=RUNS, found {item!r}")
+        a.runs_at[int(float(size))] = int(runs)
     return a
 
 
