@@ -25,7 +25,7 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * The installed start script: it hands every argument to the command unchanged, and picks the JIT
  * by the size of an eval's input files (C1 only up to TRAJEVAL_C1_MAX_BYTES, both compilers above
- * and for --batch; docs/readme/startup.md), and lets root's JVM run its compiler threads first.
+ * and for --batch; docs/readme/startup.md).
  */
 class LauncherScriptTest {
     private static final Pattern TIER = Pattern.compile("\\bTieredStopAtLevel\\s+=\\s+(\\d+)");
@@ -112,31 +112,6 @@ class LauncherScriptTest {
         Path pairs = Files.writeString(tmp.resolve("pairs.csv"), "ref,est\n\"" + ref + "\",\"" + est + "\"\n");
         assertEquals(4, tier(Map.of(), "eval", "--batch", pairs.toString(), "--reports", tmp.resolve("out").toString()));
         assertEquals(4, tier(Map.of(), "--version"));
-    }
-
-    /**
-     * Root's runs get {@code -XX:ThreadPriorityPolicy=1} (compiler threads above the application's),
-     * anyone else's none, and so no JVM warning about permissions; TRAJEVAL_OPTS overrides it. The
-     * expected policy comes from this test JVM's own effective user id (the launcher runs as the same
-     * user), read from /proc/self/status.
-     */
-    @Test
-    void compilerThreadsComeFirstOnlyForRoot() throws Exception {
-        Path status = Paths.get("/proc/self/status");
-        Assumptions.assumeTrue(Files.isReadable(status), "SKIPPED: no /proc/self/status");
-        String uid = Files.readAllLines(status).stream().filter(l -> l.startsWith("Uid:")).findFirst().orElseThrow();
-        boolean root = uid.split("\\s+")[2].equals("0");
-        Pattern policy = Pattern.compile("\\bThreadPriorityPolicy\\s+=\\s+(\\d+)");
-        Result r = launch(Map.of("TRAJEVAL_OPTS", "-XX:+PrintFlagsFinal"), "eval", ref.toString(), est.toString(), "--json");
-        Matcher m = policy.matcher(r.out());
-        assertTrue(m.find(), r.err());
-        assertEquals(root ? 1 : 0, Integer.parseInt(m.group(1)), uid);
-        assertEquals(0, r.code(), r.err());
-        assertTrue(!r.err().contains("ThreadPriorityPolicy"), r.err());
-        Result off = launch(Map.of("TRAJEVAL_OPTS", "-XX:+PrintFlagsFinal -XX:ThreadPriorityPolicy=0"), "--version");
-        Matcher o = policy.matcher(off.out());
-        assertTrue(o.find(), off.err());
-        assertEquals(0, Integer.parseInt(o.group(1)));
     }
 
     @Test
