@@ -162,6 +162,11 @@ final class PoseBuffer {
         return n;
     }
 
+    /** @return column {@code c}: its first {@link #size()} values are the poses' (the array, not a copy) */
+    double[] column(int c) {
+        return columns[c];
+    }
+
     /** @return value of column {@code c} of pose {@code i} */
     double get(int c, int i) {
         return columns[c][i];
