@@ -6,6 +6,7 @@ import java.nio.ByteBuffer;
 import java.security.MessageDigest;
 import java.util.Arrays;
 import java.util.HexFormat;
+import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicInteger;
 
 /**
@@ -60,6 +61,9 @@ final class BlockRead {
     private int n;
     private double lastT;
     private final long estimate;
+    /** Segment columns and block buffers already copied or read, for later blocks (fewer fresh pages and GCs). */
+    private final ConcurrentLinkedQueue<double[][]> spareColumns = new ConcurrentLinkedQueue<>();
+    private final ConcurrentLinkedQueue<byte[]> spareBuffers = new ConcurrentLinkedQueue<>();
 
     private BlockRead(ByteSource file, String source, ReadOptions options, Format format, long[] starts, long estimate) {
         this.file = file;
@@ -131,7 +135,7 @@ final class BlockRead {
 
     private LoadedTrajectory run(ReadThreads threads) {
         try {
-            firstLines = ByteLines.range(file, source, 0, starts[1]);
+            firstLines = ByteLines.range(file, source, 0, starts[1], null);
             firstRows = format.first(firstLines);
         } catch (RuntimeException e) {
             close(firstLines);
@@ -229,10 +233,15 @@ final class BlockRead {
     }
 
     private void parse(int block) {
-        ByteLines lines = block == 0 ? firstLines : ByteLines.range(file, source, starts[block], starts[block + 1]);
+        ByteLines lines = block == 0 ? firstLines
+                : ByteLines.range(file, source, starts[block], starts[block + 1], spareBuffers.poll());
         try {
             NumericRows rows = block == 0 ? firstRows : format.later(lines);
             PoseBuffer poses = format.segment();
+            double[][] spare = spareColumns.poll();
+            if (spare != null) {
+                poses.reuse(spare);
+            }
             poses.sizeFrom(lines);
             double[] in = new double[8];
             double[] row = new double[8];
@@ -243,6 +252,7 @@ final class BlockRead {
         } finally {
             lines.close();
         }
+        spareBuffers.add(lines.buffer());
     }
 
     /** Keeps a parsed segment, and appends every segment whose predecessors are all appended. */
@@ -274,6 +284,7 @@ final class BlockRead {
             }
             n += m;
             lastT = s.get(0, m - 1);
+            spareColumns.add(s.columns());
         }
     }
 

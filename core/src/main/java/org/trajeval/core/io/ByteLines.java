@@ -66,10 +66,18 @@ final class ByteLines implements Closeable {
     /**
      * Opens the bytes {@code [from, to)} of a file, a block cut at line boundaries
      * ({@link BlockRead}): not hashed, and a byte-order mark is skipped only at the file's start.
+     *
+     * @param spare a buffer to read into instead of a new one (from {@link #buffer()} of a finished
+     *     range), or null
      */
-    static ByteLines range(ByteSource file, String source, long from, long to) {
+    static ByteLines range(ByteSource file, String source, long from, long to, byte[] spare) {
         try {
-            return new ByteLines(source, file.open(from), Long.MAX_VALUE, to - from, null, to - from, from > 0);
+            ByteLines lines = new ByteLines(source, file.open(from), Long.MAX_VALUE, to - from, null, to - from,
+                    from > 0);
+            if (spare != null && spare.length == lines.buf.length) {
+                lines.buf = spare; // a buffer of an earlier block, whose lines are all read
+            }
+            return lines;
         } catch (IOException | SecurityException e) {
             throw FileProblems.unreadable(source, e);
         }
