@@ -12,21 +12,24 @@ import java.util.concurrent.Future;
  * thread), RUNS times in one JVM, each file either as a whole ({@code whole}: {@link ReadThreads#ONE},
  * a pair on two threads as before) or in blocks ({@code blocks}: {@link ReadThreads} over the pool),
  * and prints each run's wall time and process CPU time (the first run is the cold one).
- * Usage: {@code java -cp ... org.trajeval.core.io.ReadBlocksSpeed whole|blocks RUNS FILE [FILE2]}.
+ * Usage: {@code java -cp ... org.trajeval.core.io.ReadBlocksSpeed whole|blocks[:MIB] RUNS FILE [FILE2]}
+ * (MIB: the block size in MiB).
  */
 public final class ReadBlocksSpeed {
     private ReadBlocksSpeed() {
     }
 
     public static void main(String[] args) throws Exception {
-        boolean blocks = args[0].equals("blocks");
+        boolean blocks = args[0].startsWith("blocks");
+        long blockBytes = args[0].startsWith("blocks:") ? Long.parseLong(args[0].substring(7)) << 20
+                : ReadThreads.BLOCK_BYTES;
         int runs = Integer.parseInt(args[1]);
         Path ref = Path.of(args[2]);
         Path est = args.length > 3 ? Path.of(args[3]) : null;
         com.sun.management.OperatingSystemMXBean os =
                 (com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean();
         ExecutorService pool = Executors.newSingleThreadExecutor();
-        ReadThreads threads = blocks ? new ReadThreads(pool, 2) : ReadThreads.ONE;
+        ReadThreads threads = blocks ? new ReadThreads(pool, 2, blockBytes) : ReadThreads.ONE;
         try {
             for (int r = 0; r < runs; r++) {
                 long p0 = os.getProcessCpuTime();
