@@ -13,7 +13,7 @@ import java.util.concurrent.RejectedExecutionException;
  */
 public final class ReadThreads {
     /** Bytes of one block (nominal; a block ends at the first line end at or after it). */
-    static final long BLOCK_BYTES = 8L << 20;
+    static final long BLOCK_BYTES = 2L << 20;
     /** One thread: every file is read as a whole, on the calling thread. */
     public static final ReadThreads ONE = new ReadThreads(null, 1);
 
