@@ -40,14 +40,16 @@ final class EvalThreads implements AutoCloseable {
 
     /**
      * Reads the reference and the estimate, the estimate on a second thread when there is one; a
-     * thread whose file is done (or an idle one) helps parse the blocks of a big file still being read.
+     * thread whose file is done (or an idle one) helps parse the blocks of a big file still being read
+     * ({@link ReadThreads#forPair}: where one file is at least twice the other's size, or with more
+     * threads than files).
      */
     LoadedTrajectory[] both(ReadOptions refOptions, Path reference, ReadOptions estOptions, Path estimate) {
         if (pool == null) {
             return new LoadedTrajectory[] {TrajectoryReader.read(reference, refOptions),
                 TrajectoryReader.read(estimate, estOptions)};
         }
-        ReadThreads readers = new ReadThreads(pool, threads);
+        ReadThreads readers = ReadThreads.forPair(pool, threads, reference, estimate);
         Future<LoadedTrajectory> est = pool.submit(() -> TrajectoryReader.read(estimate, estOptions, readers));
         LoadedTrajectory ref;
         try {

@@ -1,5 +1,8 @@
 package org.trajeval.core.io;
 
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.Executor;
 import java.util.concurrent.RejectedExecutionException;
@@ -28,6 +31,32 @@ public final class ReadThreads {
      */
     public ReadThreads(Executor helpers, int threads) {
         this(helpers, threads, BLOCK_BYTES);
+    }
+
+    /**
+     * The threads for reading a pair at once, one file per thread: blocks only where a thread would
+     * otherwise idle, that is with more threads than files or one file at least twice the size of
+     * the other (an equal 10^7 planar pair on two threads measured 3-5 % slower in blocks: both
+     * threads are busy anyway, and blocks cost a second pass over the bytes for the hash and a copy
+     * of each segment).
+     *
+     * @param threads threads in all, the calling one included
+     * @return {@link #ONE} when blocks would not pay, or a file's size cannot be told
+     */
+    public static ReadThreads forPair(Executor helpers, int threads, Path a, Path b) {
+        if (threads < 2) {
+            return ONE;
+        }
+        if (threads > 2) {
+            return new ReadThreads(helpers, threads);
+        }
+        try {
+            long x = Files.size(a);
+            long y = Files.size(b);
+            return Math.max(x, y) >= 2 * Math.min(x, y) ? new ReadThreads(helpers, threads) : ONE;
+        } catch (IOException | RuntimeException e) {
+            return ONE; // not a plain file (a bag topic, say): read as before
+        }
     }
 
     /** As above with another block size (tests force small blocks). */

@@ -162,6 +162,19 @@ class BlockReadTest {
         }
     }
 
+    @Test
+    void pairOnTwoThreadsIsReadInBlocksOnlyWhenOneFileIsAtLeastTwiceTheOther() throws IOException {
+        Path small = write("s.tum", "1 0 0 0 0 0 0 1\n");
+        Path half = write("h.tum", "1 0 0 0 0 0 0 1\n".repeat(2));
+        Path big = write("b.tum", "1 0 0 0 0 0 0 1\n".repeat(3));
+        assertEquals(ReadThreads.ONE, ReadThreads.forPair(pool, 2, big, half));
+        assertTrue(ReadThreads.forPair(pool, 2, half, small) != ReadThreads.ONE);
+        assertTrue(ReadThreads.forPair(pool, 2, small, big) != ReadThreads.ONE);
+        assertTrue(ReadThreads.forPair(pool, 3, big, half) != ReadThreads.ONE);
+        assertEquals(ReadThreads.ONE, ReadThreads.forPair(pool, 1, small, big));
+        assertEquals(ReadThreads.ONE, ReadThreads.forPair(pool, 2, small, dir.resolve("missing.tum")));
+    }
+
     private static ReadThreads threads(int block) {
         return new ReadThreads(pool, 3, block);
     }
