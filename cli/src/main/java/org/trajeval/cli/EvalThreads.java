@@ -7,6 +7,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import org.trajeval.core.io.LoadedTrajectory;
 import org.trajeval.core.io.ReadOptions;
+import org.trajeval.core.io.ReadThreads;
 import org.trajeval.core.io.TrajectoryReader;
 
 /**
@@ -37,16 +38,22 @@ final class EvalThreads implements AutoCloseable {
                 : new org.trajeval.core.eval.Parallelism(pool, threads);
     }
 
-    /** Reads the reference and the estimate, the estimate on a second thread when there is one. */
+    /**
+     * Reads the reference and the estimate, the estimate on a second thread when there is one; a
+     * thread whose file is done (or an idle one) helps parse the blocks of a big file still being read
+     * ({@link ReadThreads#forPair}: where one file is at least twice the other's size, or with more
+     * threads than files).
+     */
     LoadedTrajectory[] both(ReadOptions refOptions, Path reference, ReadOptions estOptions, Path estimate) {
         if (pool == null) {
             return new LoadedTrajectory[] {TrajectoryReader.read(reference, refOptions),
                 TrajectoryReader.read(estimate, estOptions)};
         }
-        Future<LoadedTrajectory> est = pool.submit(() -> TrajectoryReader.read(estimate, estOptions));
+        ReadThreads readers = ReadThreads.forPair(pool, threads, reference, estimate);
+        Future<LoadedTrajectory> est = pool.submit(() -> TrajectoryReader.read(estimate, estOptions, readers));
         LoadedTrajectory ref;
         try {
-            ref = TrajectoryReader.read(reference, refOptions);
+            ref = TrajectoryReader.read(reference, refOptions, readers);
         } catch (RuntimeException e) {
             est.cancel(true);
             throw e;

@@ -45,13 +45,42 @@ final class ByteLines implements Closeable {
     private int end;
 
     private final long expectedBytes;
+    /** Bytes still to read from {@link #in} (a block of a file stops here; a whole file at its end). */
+    private long unread;
 
     private ByteLines(String source, InputStream in, long maxBytes, long expectedBytes) {
+        this(source, in, maxBytes, expectedBytes, sha256(), Long.MAX_VALUE, false);
+    }
+
+    private ByteLines(String source, InputStream in, long maxBytes, long expectedBytes, MessageDigest sha,
+            long unread, boolean started) {
         this.source = source;
         this.in = in;
         this.maxBytes = maxBytes;
         this.expectedBytes = expectedBytes;
-        this.sha = sha256();
+        this.sha = sha;
+        this.unread = unread;
+        this.started = started;
+    }
+
+    /**
+     * Opens the bytes {@code [from, to)} of a file, a block cut at line boundaries
+     * ({@link BlockRead}): not hashed, and a byte-order mark is skipped only at the file's start.
+     *
+     * @param spare a buffer to read into instead of a new one (from {@link #buffer()} of a finished
+     *     range), or null
+     */
+    static ByteLines range(ByteSource file, String source, long from, long to, byte[] spare) {
+        try {
+            ByteLines lines = new ByteLines(source, file.open(from), Long.MAX_VALUE, to - from, null, to - from,
+                    from > 0);
+            if (spare != null && spare.length == lines.buf.length) {
+                lines.buf = spare; // a buffer of an earlier block, whose lines are all read
+            }
+            return lines;
+        } catch (IOException | SecurityException e) {
+            throw FileProblems.unreadable(source, e);
+        }
     }
 
     /** Opens a file; refuses a missing or unreadable one as {@link InputProblem#UNREADABLE}. */
@@ -84,7 +113,7 @@ final class ByteLines implements Closeable {
      *     {@link #SAMPLE_BYTES} spread evenly over the file, NaN if it cannot be told; numbers
      *     often grow along a file, so its first lines alone would misjudge the pose count
      */
-    private static double sampleLineLength(ByteSource file, long size) {
+    static double sampleLineLength(ByteSource file, long size) {
         java.nio.ByteBuffer buf = java.nio.ByteBuffer.allocate(SAMPLE_BYTES);
         long spanned = 0;
         long lines = 0;
@@ -241,7 +270,7 @@ final class ByteLines implements Closeable {
         }
         int n;
         try {
-            n = in.read(buf, limit, capacity - limit);
+            n = unread == 0 ? -1 : in.read(buf, limit, (int) Math.min(capacity - limit, unread));
         } catch (IOException e) {
             throw FileProblems.unreadable(source, e);
         }
@@ -249,7 +278,10 @@ final class ByteLines implements Closeable {
             eof = true;
             return;
         }
-        sha.update(buf, limit, n);
+        unread -= n;
+        if (sha != null) {
+            sha.update(buf, limit, n);
+        }
         for (int i = limit + n - 1; i >= limit; i--) {
             if (buf[i] == '\n') {
                 complete = i + 1;

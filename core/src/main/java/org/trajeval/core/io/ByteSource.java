@@ -15,6 +15,13 @@ interface ByteSource {
     /** @return a new stream over every byte, from the first */
     InputStream open() throws IOException;
 
+    /** @return a new stream over the bytes from byte {@code from} on (a block of the file, {@link BlockRead}) */
+    default InputStream open(long from) throws IOException {
+        InputStream in = open();
+        in.skipNBytes(from);
+        return in;
+    }
+
     /** @return the number of bytes, 0 when unknown (a size hint: the readers count what they read) */
     long size() throws IOException;
 

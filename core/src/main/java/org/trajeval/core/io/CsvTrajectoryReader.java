@@ -20,6 +20,18 @@ final class CsvTrajectoryReader {
     private CsvTrajectoryReader() {
     }
 
+    /** As {@link #read(ByteSource, String, ReadOptions, String)}, a big plain file in blocks on {@code threads}. */
+    static LoadedTrajectory read(ByteSource file, String source, ReadOptions options, String reason,
+            ReadThreads threads) {
+        if (options.order() == TimestampOrder.REFUSE_UNSORTED && options.csv().delimiter() <= 127) {
+            LoadedTrajectory t = BlockRead.read(file, source, options, new Blocks(source, options, reason), threads);
+            if (t != null) {
+                return t;
+            }
+        }
+        return read(file, source, options, reason);
+    }
+
     static LoadedTrajectory read(ByteSource file, String source, ReadOptions options, String reason) {
         CsvLayout layout = options.csv();
         if (layout.delimiter() > 127) {
@@ -69,7 +81,7 @@ final class CsvTrajectoryReader {
     private static final int BATCH_LINES = 4096;
 
     /** Reads up to {@link #BATCH_LINES} data lines; @return false at the end of the file. */
-    private static boolean readBatch(NumericRows rows, PoseBuffer poses, double[] row, TimeUnit unit, String source,
+    static boolean readBatch(NumericRows rows, PoseBuffer poses, double[] row, TimeUnit unit, String source,
             String timeColumn) {
         for (int k = 0; k < BATCH_LINES; k++) {
             if (!rows.next(row)) {
@@ -96,6 +108,71 @@ final class CsvTrajectoryReader {
             throw new InputException(null, 0, "delimiter", InputProblem.INVALID_OPTION,
                     "the CSV delimiter must not be a quote, '#', a line break, a digit, a letter, '.', '+' or '-'",
                     String.valueOf(d));
+        }
+    }
+
+    /** The blocks of a plain CSV file: the header in the first block, its columns in every block. */
+    static final class Blocks implements BlockRead.Format {
+        private final String source;
+        private final ReadOptions options;
+        private final String reason;
+        private final CsvLayout layout;
+        private CsvColumns columns;
+        private String describe;
+
+        Blocks(String source, ReadOptions options, String reason) {
+            this.source = source;
+            this.options = options;
+            this.reason = reason;
+            this.layout = options.csv();
+        }
+
+        @Override
+        public int columns() {
+            return 4;
+        }
+
+        @Override
+        public NumericRows first(ByteLines lines) {
+            NumericRows rows = new NumericRows(lines, source, (byte) layout.delimiter(), true);
+            if (!rows.nextContentLine()) {
+                return null;
+            }
+            List<String> header = new ArrayList<>(rows.fieldCount());
+            for (int i = 0; i < rows.fieldCount(); i++) {
+                header.add(rows.field(i));
+            }
+            columns = CsvColumns.locate(header, layout, source, rows.lineNumber());
+            describe = CsvColumns.describe(header, layout.delimiter());
+            return select(rows);
+        }
+
+        @Override
+        public NumericRows later(ByteLines lines) {
+            return select(new NumericRows(lines, source, (byte) layout.delimiter(), true));
+        }
+
+        private NumericRows select(NumericRows rows) {
+            rows.select(columns.index(), columns.names(), columns.units());
+            rows.requireFields(columns.fieldCount(), describe);
+            return rows;
+        }
+
+        @Override
+        public PoseBuffer segment() {
+            return new PoseBuffer(source, layout.timeColumn(), 4, TimestampOrder.REFUSE_UNSORTED, options.duplicates(),
+                    options.maxPoses()).positions(layout.xColumn(), layout.yColumn());
+        }
+
+        @Override
+        public boolean readBatch(NumericRows rows, PoseBuffer poses, double[] in, double[] row) {
+            return CsvTrajectoryReader.readBatch(rows, poses, row, layout.timeUnit(), source, layout.timeColumn());
+        }
+
+        @Override
+        public LoadedTrajectory result(int n, double[][] c, String sha256) {
+            return new LoadedTrajectory(source, TrajectoryFormat.CSV, reason,
+                    PlanarTrajectory.ofFirst(n, c[0], c[1], c[2], c[3]), sha256, false);
         }
     }
 }

@@ -20,6 +20,17 @@ record LocalFile(Path path) implements ByteSource {
     }
 
     @Override
+    public InputStream open(long from) throws IOException {
+        FileChannel ch = FileChannel.open(path);
+        try {
+            return java.nio.channels.Channels.newInputStream(ch.position(from));
+        } catch (IOException | RuntimeException e) {
+            ch.close();
+            throw e;
+        }
+    }
+
+    @Override
     public long size() throws IOException {
         return Files.isRegularFile(path) ? Files.size(path) : 0;
     }

@@ -129,6 +129,25 @@ final class PoseBuffer {
     }
 
     /**
+     * Takes over columns of an earlier buffer whose poses are no longer needed (a block's segment
+     * already copied, {@link BlockRead}) instead of the initial ones. Call before the first {@link #add}.
+     *
+     * @return this buffer
+     */
+    PoseBuffer reuse(double[][] spare) {
+        if (n > 0 || spare.length != columns.length || lines != null) {
+            throw new IllegalStateException("columns are reused before the first pose, by a buffer of as many columns");
+        }
+        System.arraycopy(spare, 0, columns, 0, columns.length);
+        return this;
+    }
+
+    /** @return the columns themselves (for {@link #reuse} by a later buffer once this one's poses are copied) */
+    double[][] columns() {
+        return columns.clone();
+    }
+
+    /**
      * Lets the buffer size itself from the bytes read so far: at the first growth it extrapolates
      * the pose count from the bytes per pose, so a big file needs one allocation, not twenty.
      */
@@ -160,6 +179,11 @@ final class PoseBuffer {
     /** @return number of poses so far */
     int size() {
         return n;
+    }
+
+    /** @return column {@code c}: its first {@link #size()} values are the poses' (the array, not a copy) */
+    double[] column(int c) {
+        return columns[c];
     }
 
     /** @return value of column {@code c} of pose {@code i} */

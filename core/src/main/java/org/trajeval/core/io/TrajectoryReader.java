@@ -31,7 +31,16 @@ public final class TrajectoryReader {
      * @throws InputException on any bad input, naming file, line, column and what was expected
      */
     public static LoadedTrajectory read(Path path, ReadOptions options) {
+        return read(path, options, ReadThreads.ONE);
+    }
+
+    /**
+     * Reads one file as {@link #read(Path, ReadOptions)}, a big CSV or TUM file in blocks parsed by
+     * every free thread of {@code threads} (the same values, hash and refusals).
+     */
+    public static LoadedTrajectory read(Path path, ReadOptions options, ReadThreads threads) {
         Objects.requireNonNull(path, "path");
+        Objects.requireNonNull(threads, "threads");
         Objects.requireNonNull(options, "options");
         checkOptions(options);
         String source = path.toString();
@@ -44,7 +53,7 @@ public final class TrajectoryReader {
             throw BagTopics.needed(path, source);
         }
         checkFile(path, source, options.maxBytes());
-        return readText(ByteSource.of(path), source, options);
+        return readText(ByteSource.of(path), source, options, threads);
     }
 
     /**
@@ -72,11 +81,11 @@ public final class TrajectoryReader {
             throw FileProblems.tooManyBytes(source, bytes.size(), options.maxBytes());
         }
         checkBytes(source, bytes.size(), head, n);
-        return readText(bytes, source, options);
+        return readText(bytes, source, options, ReadThreads.ONE);
     }
 
     /** Detects the format unless given, then reads the text file with that format's reader. */
-    private static LoadedTrajectory readText(ByteSource in, String source, ReadOptions options) {
+    private static LoadedTrajectory readText(ByteSource in, String source, ReadOptions options, ReadThreads threads) {
         TrajectoryFormat format = options.format();
         String reason = "given";
         if (format == null) {
@@ -85,8 +94,8 @@ public final class TrajectoryReader {
             reason = d.reason();
         }
         return switch (format) {
-            case CSV -> CsvTrajectoryReader.read(in, source, options, reason);
-            case TUM -> TumReader.read(in, source, options, reason);
+            case CSV -> CsvTrajectoryReader.read(in, source, options, reason, threads);
+            case TUM -> TumReader.read(in, source, options, reason, threads);
             case KITTI -> KittiReader.read(in, source, options, reason);
             case EUROC -> EurocReader.read(in, source, options, reason);
             case NCLT, ROBOTCAR_INS, ROBOTCAR_VO -> EulerPoseReader.read(in, source, options, reason, format);

@@ -16,11 +16,21 @@ final class TumReader {
     private TumReader() {
     }
 
+    /** As {@link #read(ByteSource, String, ReadOptions, String)}, a big file in blocks on {@code threads}. */
+    static LoadedTrajectory read(ByteSource file, String source, ReadOptions options, String reason,
+            ReadThreads threads) {
+        if (options.order() == TimestampOrder.REFUSE_UNSORTED) {
+            LoadedTrajectory t = BlockRead.read(file, source, options, new Blocks(source, options, reason), threads);
+            if (t != null) {
+                return t;
+            }
+        }
+        return read(file, source, options, reason);
+    }
+
     static LoadedTrajectory read(ByteSource file, String source, ReadOptions options, String reason) {
         try (ByteLines lines = ByteLines.open(file, source, options.maxBytes())) {
-            NumericRows rows = new NumericRows(lines, source, NumericRows.WHITESPACE, false);
-            rows.select(new int[] {0, 1, 2, 3, 4, 5, 6, 7}, NAMES, UNITS);
-            rows.requireFields(8, "t tx ty tz qx qy qz qw, separated by spaces");
+            NumericRows rows = rows(lines, source);
             PoseBuffer poses = new PoseBuffer(source, "t", 8, options.order(),
                     options.duplicates(), options.maxPoses()).positions("tx", "ty", "tz");
             poses.sizeFrom(lines);
@@ -37,8 +47,15 @@ final class TumReader {
         }
     }
 
+    private static NumericRows rows(ByteLines lines, String source) {
+        NumericRows rows = new NumericRows(lines, source, NumericRows.WHITESPACE, false);
+        rows.select(new int[] {0, 1, 2, 3, 4, 5, 6, 7}, NAMES, UNITS);
+        rows.requireFields(8, "t tx ty tz qx qy qz qw, separated by spaces");
+        return rows;
+    }
+
     /** Reads up to 4096 poses; @return false at the end of the file. */
-    private static boolean readBatch(NumericRows rows, PoseBuffer poses, double[] in, double[] row, double tolerance,
+    static boolean readBatch(NumericRows rows, PoseBuffer poses, double[] in, double[] row, double tolerance,
             String source) {
         for (int k = 0; k < 4096; k++) {
             if (!rows.next(in)) {
@@ -69,5 +86,50 @@ final class TumReader {
             }
         }
         return true;
+    }
+
+    /** The blocks of a TUM file: every block read alike. */
+    static final class Blocks implements BlockRead.Format {
+        private final String source;
+        private final ReadOptions options;
+        private final String reason;
+
+        Blocks(String source, ReadOptions options, String reason) {
+            this.source = source;
+            this.options = options;
+            this.reason = reason;
+        }
+
+        @Override
+        public int columns() {
+            return 8;
+        }
+
+        @Override
+        public NumericRows first(ByteLines lines) {
+            return rows(lines, source);
+        }
+
+        @Override
+        public NumericRows later(ByteLines lines) {
+            return rows(lines, source);
+        }
+
+        @Override
+        public PoseBuffer segment() {
+            return new PoseBuffer(source, "t", 8, TimestampOrder.REFUSE_UNSORTED, options.duplicates(),
+                    options.maxPoses()).positions("tx", "ty", "tz");
+        }
+
+        @Override
+        public boolean readBatch(NumericRows rows, PoseBuffer poses, double[] in, double[] row) {
+            return TumReader.readBatch(rows, poses, in, row, options.quaternionTolerance(), source);
+        }
+
+        @Override
+        public LoadedTrajectory result(int n, double[][] c, String sha256) {
+            return new LoadedTrajectory(source, TrajectoryFormat.TUM, reason,
+                    SpatialTrajectory.ofFirst(n, c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]), sha256, false);
+        }
     }
 }
