@@ -227,6 +227,22 @@ public final class InterpolatedReference implements PositionColumns {
         copy9(cached, c, out, o);
     }
 
+    /**
+     * Writes the rotation matrix of pose k into {@code out[o..o+9)} as {@link #rotation(int, double[],
+     * int, Cursor)} does, without the cursor's matrix cache (neither read nor filled; its slerp is
+     * used): for callers that keep the matrix themselves, so it is neither looked up nor copied twice.
+     */
+    public void rotationOnce(int k, double[] out, int o, Cursor cursor) {
+        if (yaw != null) {
+            Rotations.aboutZ(yaw[k], out, o);
+            return;
+        }
+        if (cursor.owner != this) {
+            cursor.clear(this);
+        }
+        slerped(k, cursor, out, o);
+    }
+
     /** Copies 9 doubles (inline: a 9-element System.arraycopy is a call to a stub). */
     private static void copy9(double[] from, int f, double[] to, int t) {
         for (int i = 0; i < 9; i++) {

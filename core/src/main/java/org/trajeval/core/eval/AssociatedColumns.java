@@ -122,6 +122,18 @@ final class AssociatedColumns implements PosePairs {
         }
     }
 
+    /**
+     * As {@link #referenceRotation(int, double[], int, Scratch)}, for a caller that keeps the matrix
+     * (the window of {@link SpatialErrors}): an interpolated rotation skips the cursor's matrix cache.
+     */
+    void referenceRotationOnce(int k, double[] out, int o, Scratch s) {
+        if (interpolated != null) {
+            interpolated.rotationOnce(k, out, o, s.cursor());
+        } else {
+            ref.rotation(refIndex[k], out, o);
+        }
+    }
+
     @Override
     public void estimateRotation(int k, double[] out, int o) {
         est.rotation(estAt(k), out, o);

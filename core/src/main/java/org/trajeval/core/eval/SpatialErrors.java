@@ -3,6 +3,7 @@ package org.trajeval.core.eval;
 import java.util.Arrays;
 import org.trajeval.core.align.AlignmentModel;
 import org.trajeval.core.align.AlignmentTransform;
+import org.trajeval.core.assoc.InterpolatedReference;
 import org.trajeval.core.geom.Rotations;
 import org.trajeval.core.metric.RelativeMotion;
 import org.trajeval.core.traj.PositionColumns;
@@ -19,7 +20,7 @@ import org.trajeval.core.traj.Trajectory;
  *
  * <p>Every pose of an RPE pass is met twice, as the end pose j of one pair and as the start pose i
  * of a later one. {@link Window} keeps the reference pose and the aligned estimate pose of the poses
- * a thread met last (a direct-mapped cache over pose indices, 192 B per slot, 96 KiB per thread), so
+ * a thread met last (a direct-mapped cache over pose indices, 192 B per slot, 192 KiB per thread), so
  * each is computed once when pairs move forward less than {@value Window#SLOTS} poses apart; the
  * values are the same either way.
  */
@@ -327,7 +328,7 @@ final class SpatialErrors {
      * estimate rotation R' (9) and position p' (3, m) into {@code v[o..o+24)}.
      */
     private void pose(int k, double[] v, int o, AssociatedColumns.Scratch s) {
-        pairs.referenceRotation(k, v, o, s);
+        pairs.referenceRotationOnce(k, v, o, s);
         v[o + 9] = refPositions.x(k);
         v[o + 10] = refPositions.y(k);
         v[o + 11] = refPositions.z(k);
@@ -388,8 +389,11 @@ final class SpatialErrors {
      * new kernel): used with another, it forgets what it held.
      */
     static final class Window {
-        /** Number of slots (a power of two): 96 KiB of values. */
-        static final int SLOTS = 512;
+        /**
+         * Number of slots (a power of two): 192 KiB of values. As many as the interpolated reference's
+         * matrix cache ({@link InterpolatedReference.Cursor#SLOTS}), which the window's poses skip.
+         */
+        static final int SLOTS = 1024;
         private final double[] v = new double[24 * SLOTS];
         private final int[] pose = new int[SLOTS];
         private SpatialErrors owner;
