@@ -329,6 +329,18 @@ final class SpatialErrors {
      */
     private void pose(int k, double[] v, int o, AssociatedColumns.Scratch s) {
         pairs.referenceRotationOnce(k, v, o, s);
+        poseAfterRotation(k, v, o);
+    }
+
+    /** {@link #pose} of poses k and k + 1, into {@code v[o..o+24)} and {@code v[p..p+24)}, their reference rotations side by side. */
+    private void poses(int k, double[] v, int o, int p, AssociatedColumns.Scratch s) {
+        pairs.referenceRotationsOnce(k, v, o, p, s);
+        poseAfterRotation(k, v, o);
+        poseAfterRotation(k + 1, v, p);
+    }
+
+    /** The rest of {@link #pose} once the reference rotation is at {@code v[o..o+9)}. */
+    private void poseAfterRotation(int k, double[] v, int o) {
         v[o + 9] = refPositions.x(k);
         v[o + 10] = refPositions.y(k);
         v[o + 11] = refPositions.z(k);
@@ -385,7 +397,9 @@ final class SpatialErrors {
 
     /**
      * The poses a thread met last, for one kernel instance: pose k in slot k mod {@value #SLOTS}, its
-     * 24 values as {@link #pose} writes them. Bound to one kernel at a time (a new alignment makes a
+     * 24 values as {@link #pose} writes them. When the scratch says poses are asked in runs
+     * ({@link AssociatedColumns.Scratch#posesInRuns}), a pose not held is computed together with the
+     * next one ({@link #poses}: two slerps side by side). Bound to one kernel at a time (a new alignment makes a
      * new kernel): used with another, it forgets what it held.
      */
     static final class Window {
@@ -407,7 +421,13 @@ final class SpatialErrors {
             int slot = k & (SLOTS - 1);
             int o = 24 * slot;
             if (pose[slot] != k) {
-                kernel.pose(k, v, o, s);
+                int next = (k + 1) & (SLOTS - 1);
+                if (s.posesInRuns && k + 1 < kernel.pairs.size() && pose[next] != k + 1) {
+                    kernel.poses(k, v, o, 24 * next, s);
+                    pose[next] = k + 1;
+                } else {
+                    kernel.pose(k, v, o, s);
+                }
                 pose[slot] = k;
             }
             return o;
