@@ -41,12 +41,6 @@ final class AssociatedColumns implements PosePairs {
      * both quaternions of every pose to matrices again for matched pairs).
      */
     private final double[] ateRotation;
-    /**
-     * ATE translation errors (m) that {@link #rpe} computes beside {@link #ateRotation} for its start
-     * pose i from the positions in the window, or null when not kept ({@link #keepAteTranslations}).
-     * Valid where {@link #ateRotation} is not NaN.
-     */
-    private double[] ateTranslation;
     /** The 3x3 kernels for the alignment set last. */
     private SpatialErrors spatial;
     /** The 2x2 kernels when the pairs and the alignment are planar; null otherwise. */
@@ -168,20 +162,9 @@ final class AssociatedColumns implements PosePairs {
         return ateRotation != null && !Double.isNaN(ateRotation[k]);
     }
 
-    /**
-     * Makes the RPE pass keep each start pose's ATE translation error in {@code into} (m, length
-     * {@link #size}; 8 B per pose against the ATE pass computing it again) for SE(3) pairs; call
-     * before {@link #align}. Without it the ATE pass computes every translation.
-     */
-    void keepAteTranslations(double[] into) {
-        if (ateRotation != null) {
-            ateTranslation = into;
-        }
-    }
-
     /** Sets the alignment applied to the estimate before the errors (identity for model NONE). */
     void align(AlignmentTransform tf) {
-        spatial = new SpatialErrors(this, est, ateRotation, ateTranslation, tf);
+        spatial = new SpatialErrors(this, est, ateRotation, tf);
         planar = PlanarErrors.of(est, estIndex, k0, interpolated, ref, refIndex, tf, m);
     }
 

@@ -20,9 +20,9 @@ import org.trajeval.core.traj.Trajectory;
  * that are not) take 2x2 blocks of (cos, sin) of the yaws instead of 3x3 matrices ({@link PlanarErrors}).
  *
  * <p>Memory on top of the inputs: the reference interpolated at the estimate stamps (planar 24 B;
- * SE(3) 28 B per pose: its bracket and the ATE rotation and translation errors the RPE computes;
- * for nearest matching 8 B of index maps instead, and for SE(3) pairs the ATE rotation and
- * translation errors the RPE computes, 16 B), for planar kernels the ATE rotation errors the RPE
+ * SE(3) 20 B per pose: its bracket and the ATE rotation errors the RPE computes; for nearest
+ * matching 8 B of index maps instead, and for SE(3) pairs the ATE rotation errors the RPE computes,
+ * 8 B), for planar kernels the ATE rotation errors the RPE
  * computes (8 B per pose), and two error arrays (16 B per pose) that the RPE and then the ATE fill;
  * every RPE pair and every ATE pose is computed once.
  */
@@ -64,19 +64,12 @@ final class ColumnarEvaluator {
         AssociatedColumns pairs = a.pairs();
         int m = pairs.size();
         // the error arrays are allocated (zeroed: page faults) beside the fit's covariance pass
-        // (and for SE(3) pairs the ATE translations the RPE pass keeps for its start poses)
-        double[][] errors = new double[3][];
+        double[][] errors = new double[2][];
         ColumnarAlignment fit = ColumnarAlignment.fit(pairs, o, planar, estName, par, () -> {
             errors[0] = new double[m];
             errors[1] = new double[m];
-            if (!planar) {
-                errors[2] = new double[m];
-            }
         });
         AlignmentTransform tf = fit.transform();
-        if (errors[2] != null) {
-            pairs.keepAteTranslations(errors[2]);
-        }
         pairs.align(tf);
 
         // ---- errors and statistics: each RPE pair and each ATE pose computed once, translation

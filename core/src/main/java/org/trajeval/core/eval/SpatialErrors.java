@@ -30,8 +30,6 @@ final class SpatialErrors {
     private final PositionColumns refPositions;
     /** The ATE rotation errors the RPE fills for its start poses, or null (see {@link AssociatedColumns}). */
     private final double[] ateRotation;
-    /** The ATE translation errors the RPE fills beside {@link #ateRotation}, or null (not kept). */
-    private final double[] ateTranslation;
     private final boolean aligned;
     private final double a00;
     private final double a01;
@@ -47,13 +45,11 @@ final class SpatialErrors {
     private final double t2;
     private final double scale;
 
-    SpatialErrors(AssociatedColumns pairs, Trajectory est, double[] ateRotation, double[] ateTranslation,
-            AlignmentTransform tf) {
+    SpatialErrors(AssociatedColumns pairs, Trajectory est, double[] ateRotation, AlignmentTransform tf) {
         this.pairs = pairs;
         this.est = est;
         this.refPositions = pairs.reference();
         this.ateRotation = ateRotation;
-        this.ateTranslation = ateRotation == null ? null : ateTranslation;
         this.aligned = tf.model() != AlignmentModel.NONE;
         double[] a = tf.rotation();
         double[] t = tf.translation();
@@ -74,11 +70,6 @@ final class SpatialErrors {
 
     /** The ATE of pair k into {@code s.transError} (m) and {@code s.rotError} (rad). */
     void ate(int k, AssociatedColumns.Scratch s) {
-        if (ateTranslation != null && !Double.isNaN(ateRotation[k])) {
-            s.transError = ateTranslation[k];
-            s.rotError = ateRotation[k];
-            return;
-        }
         int e = pairs.estimateIndex(k);
         double px = est.x(e);
         double py = est.y(e);
@@ -138,8 +129,8 @@ final class SpatialErrors {
 
     /**
      * The ATE of pairs [from, to) into {@code trans[k]} (m) and {@code rot[k]} (rad), as {@link #ate}
-     * gives them. A pose whose rotation error the RPE pass left takes only its translation (or,
-     * when the RPE pass kept that too, both are copied); the others go two at a time through the window and {@link Rotations#angles}, so the two angles'
+     * gives them. A pose whose rotation error the RPE pass left takes only its translation; the
+     * others go two at a time through the window and {@link Rotations#angles}, so the two angles'
      * long chains overlap.
      */
     void ateInto(int from, int to, double[] trans, double[] rot, AssociatedColumns.Scratch s) {
@@ -149,12 +140,7 @@ final class SpatialErrors {
         int waiting = -1; // a pose without its rotation error, waiting for a second one
         for (int k = from; k < to; k++) {
             if (ateRotation != null && !Double.isNaN(ateRotation[k])) {
-                if (ateTranslation != null) {
-                    trans[k] = ateTranslation[k];
-                    rot[k] = ateRotation[k];
-                } else {
-                    ateInto(k, trans, rot, s);
-                }
+                ateInto(k, trans, rot, s);
                 continue;
             }
             if (waiting < 0) {
@@ -315,12 +301,6 @@ final class SpatialErrors {
                 dot(b02, b12, b22, f02, f12, f22), two, 0);
         s.rotError = two[0];
         ateRotation[i] = two[1];
-        if (ateTranslation != null) { // |p'_i - p_ref,i|, as distance() of pose i's window values
-            double dx = px - tx;
-            double dy = py - ty;
-            double dz = pz - tz;
-            ateTranslation[i] = Math.sqrt(dx * dx + dy * dy + dz * dz);
-        }
     }
 
     /**
