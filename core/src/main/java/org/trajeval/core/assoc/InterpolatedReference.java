@@ -30,7 +30,8 @@ import org.trajeval.core.traj.SpatialTrajectory;
  * chunks are independent and the result does not depend on how the range is cut. An SE(3)
  * rotation costs a slerp and a quaternion-to-matrix conversion; a {@link Cursor} (one per thread)
  * keeps the last {@value Cursor#SLOTS} matrices computed, so a pose met again within that many
- * poses (the RPE's start pose, met first as an end pose) is not recomputed, and the {@link Slerp}
+ * poses is not recomputed (a caller that keeps the matrices itself, as the RPE's pose window does, takes
+ * them uncached from {@link #rotationOnce} or two side by side from {@link #rotationsOnce}), and the {@link Slerp}
  * of the last segment, so that poses asked in increasing order normalise each reference
  * quaternion once and poses on one segment share its arc (about 110 ns per rotation on the
  * benchmark machine, most of it the three sines and the arc cosine that give evo's bits).
