@@ -30,7 +30,8 @@ import org.trajeval.core.traj.SpatialTrajectory;
  * chunks are independent and the result does not depend on how the range is cut. An SE(3)
  * rotation costs a slerp and a quaternion-to-matrix conversion; a {@link Cursor} (one per thread)
  * keeps the last {@value Cursor#SLOTS} matrices computed, so a pose met again within that many
- * poses (the RPE's start pose, met first as an end pose) is not recomputed, and the {@link Slerp}
+ * poses is not recomputed (a caller that keeps the matrices itself, as the RPE's pose window does, takes
+ * them uncached from {@link #rotationOnce} or two side by side from {@link #rotationsOnce}), and the {@link Slerp}
  * of the last segment, so that poses asked in increasing order normalise each reference
  * quaternion once and poses on one segment share its arc (about 110 ns per rotation on the
  * benchmark machine, most of it the three sines and the arc cosine that give evo's bits).
@@ -227,6 +228,60 @@ public final class InterpolatedReference implements PositionColumns {
         copy9(cached, c, out, o);
     }
 
+    /**
+     * Writes the rotation matrix of pose k into {@code out[o..o+9)} as {@link #rotation(int, double[],
+     * int, Cursor)} does, without the cursor's matrix cache (neither read nor filled; its slerp is
+     * used): for callers that keep the matrix themselves, so it is neither looked up nor copied twice.
+     */
+    public void rotationOnce(int k, double[] out, int o, Cursor cursor) {
+        if (yaw != null) {
+            Rotations.aboutZ(yaw[k], out, o);
+            return;
+        }
+        if (cursor.owner != this) {
+            cursor.clear(this);
+        }
+        slerped(k, cursor, out, o);
+    }
+
+    /**
+     * {@link #rotationOnce} of poses k and k + 1 into {@code out[o..o+9)} and {@code out[p..p+9)}, the
+     * two slerps side by side ({@link Slerp#atBoth}): the same values, with their long chains overlapped.
+     */
+    public void rotationsOnce(int k, double[] out, int o, int p, Cursor cursor) {
+        if (yaw != null) {
+            Rotations.aboutZ(yaw[k], out, o);
+            Rotations.aboutZ(yaw[k + 1], out, p);
+            return;
+        }
+        if (cursor.owner != this) {
+            cursor.clear(this);
+        }
+        int s = seg[k + 1];
+        double[] q = cursor.q;
+        double[] q1 = cursor.q1;
+        Slerp first = toSegment(seg[k], cursor);
+        Slerp second = first;
+        if (s != cursor.segment) {
+            second = cursor.spare;
+            if (s == cursor.segment + 1) {
+                spatialRef.quaternion(s, q1);
+                second.follow(first, q1[0], q1[1], q1[2], q1[3]);
+            } else {
+                double[] q0 = cursor.q0;
+                spatialRef.quaternion(s - 1, q0);
+                spatialRef.quaternion(s, q1);
+                second.ends(q0[0], q0[1], q0[2], q0[3], q1[0], q1[1], q1[2], q1[3]);
+            }
+            cursor.spare = first;
+            cursor.slerp = second;
+            cursor.segment = s;
+        }
+        Slerp.atBoth(first, frac[k], q, 0, second, frac[k + 1], q1, 0);
+        Rotations.fromQuaternion(q[0], q[1], q[2], q[3], out, o);
+        Rotations.fromQuaternion(q1[0], q1[1], q1[2], q1[3], out, p);
+    }
+
     /** Copies 9 doubles (inline: a 9-element System.arraycopy is a call to a stub). */
     private static void copy9(double[] from, int f, double[] to, int t) {
         for (int i = 0; i < 9; i++) {
@@ -240,7 +295,13 @@ public final class InterpolatedReference implements PositionColumns {
      * keeping the shared end.
      */
     private void slerped(int k, Cursor cursor, double[] out, int o) {
-        int s = seg[k];
+        double[] q = cursor.q;
+        toSegment(seg[k], cursor).at(frac[k], q, 0);
+        Rotations.fromQuaternion(q[0], q[1], q[2], q[3], out, o);
+    }
+
+    /** @return the cursor's {@link Slerp}, set to segment s (advanced when s follows its segment) */
+    private Slerp toSegment(int s, Cursor cursor) {
         Slerp slerp = cursor.slerp;
         double[] q = cursor.q;
         if (s != cursor.segment) {
@@ -255,8 +316,7 @@ public final class InterpolatedReference implements PositionColumns {
             }
             cursor.segment = s;
         }
-        slerp.at(frac[k], q, 0);
-        Rotations.fromQuaternion(q[0], q[1], q[2], q[3], out, o);
+        return slerp;
     }
 
     /** @return the poses as a materialised sequence (rotation matrices, z = 0 for planar data) */
@@ -286,9 +346,12 @@ public final class InterpolatedReference implements PositionColumns {
         public static final int SLOTS = 1024;
         private final double[] q0 = new double[4];
         private final double[] q = new double[4];
+        private final double[] q1 = new double[4];
         private final double[] matrices = new double[9 * SLOTS];
         private final int[] pose = new int[SLOTS];
-        private final Slerp slerp = new Slerp();
+        private Slerp slerp = new Slerp();
+        /** A second slerp, for the next segment of {@link #rotationsOnce}; the two swap roles. */
+        private Slerp spare = new Slerp();
         /** The segment {@link #slerp} is set to (-1: none). */
         private int segment = -1;
         private InterpolatedReference owner;

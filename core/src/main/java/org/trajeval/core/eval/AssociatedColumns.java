@@ -116,6 +116,28 @@ final class AssociatedColumns implements PosePairs {
         }
     }
 
+    /**
+     * As {@link #referenceRotation(int, double[], int, Scratch)}, for a caller that keeps the matrix
+     * (the window of {@link SpatialErrors}): an interpolated rotation skips the cursor's matrix cache.
+     */
+    void referenceRotationOnce(int k, double[] out, int o, Scratch s) {
+        if (interpolated != null) {
+            interpolated.rotationOnce(k, out, o, s.cursor());
+        } else {
+            ref.rotation(refIndex[k], out, o);
+        }
+    }
+
+    /** {@link #referenceRotationOnce} of pairs k and k + 1 into {@code out[o..o+9)} and {@code out[p..p+9)}. */
+    void referenceRotationsOnce(int k, double[] out, int o, int p, Scratch s) {
+        if (interpolated != null) {
+            interpolated.rotationsOnce(k, out, o, p, s.cursor());
+        } else {
+            ref.rotation(refIndex[k], out, o);
+            ref.rotation(refIndex[k + 1], out, p);
+        }
+    }
+
     @Override
     public void estimateRotation(int k, double[] out, int o) {
         est.rotation(estAt(k), out, o);
@@ -172,6 +194,11 @@ final class AssociatedColumns implements PosePairs {
         double transError;
         /** Rotation error of the last pose or pair computed (rad). */
         double rotError;
+        /**
+         * True when nearly every pose index is asked, in increasing runs (every start pose, or stride 1):
+         * the 3x3 kernels' window then computes a missing pose together with the next one.
+         */
+        boolean posesInRuns;
         private PlanarErrors.Window window;
         private SpatialErrors.Window spatialWindow;
 

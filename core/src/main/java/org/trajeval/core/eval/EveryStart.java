@@ -85,6 +85,7 @@ final class EveryStart extends PairRule {
     void errorsInto(double[] trans, double[] rot) {
         par.forEachChunk(pairs, (c, from, to) -> {
             AssociatedColumns.Scratch s = new AssociatedColumns.Scratch();
+            s.posesInRuns = true;
             int j = frames ? from : firstPartner(from);
             for (int i = from; i < to; i++) {
                 j = partner(i, j);

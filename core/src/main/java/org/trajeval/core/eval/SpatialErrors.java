@@ -3,6 +3,7 @@ package org.trajeval.core.eval;
 import java.util.Arrays;
 import org.trajeval.core.align.AlignmentModel;
 import org.trajeval.core.align.AlignmentTransform;
+import org.trajeval.core.assoc.InterpolatedReference;
 import org.trajeval.core.geom.Rotations;
 import org.trajeval.core.metric.RelativeMotion;
 import org.trajeval.core.traj.PositionColumns;
@@ -19,7 +20,7 @@ import org.trajeval.core.traj.Trajectory;
  *
  * <p>Every pose of an RPE pass is met twice, as the end pose j of one pair and as the start pose i
  * of a later one. {@link Window} keeps the reference pose and the aligned estimate pose of the poses
- * a thread met last (a direct-mapped cache over pose indices, 192 B per slot, 96 KiB per thread), so
+ * a thread met last (a direct-mapped cache over pose indices, 192 B per slot, 192 KiB per thread), so
  * each is computed once when pairs move forward less than {@value Window#SLOTS} poses apart; the
  * values are the same either way.
  */
@@ -307,7 +308,19 @@ final class SpatialErrors {
      * estimate rotation R' (9) and position p' (3, m) into {@code v[o..o+24)}.
      */
     private void pose(int k, double[] v, int o, AssociatedColumns.Scratch s) {
-        pairs.referenceRotation(k, v, o, s);
+        pairs.referenceRotationOnce(k, v, o, s);
+        poseAfterRotation(k, v, o);
+    }
+
+    /** {@link #pose} of poses k and k + 1, into {@code v[o..o+24)} and {@code v[p..p+24)}, their reference rotations side by side. */
+    private void poses(int k, double[] v, int o, int p, AssociatedColumns.Scratch s) {
+        pairs.referenceRotationsOnce(k, v, o, p, s);
+        poseAfterRotation(k, v, o);
+        poseAfterRotation(k + 1, v, p);
+    }
+
+    /** The rest of {@link #pose} once the reference rotation is at {@code v[o..o+9)}. */
+    private void poseAfterRotation(int k, double[] v, int o) {
         v[o + 9] = refPositions.x(k);
         v[o + 10] = refPositions.y(k);
         v[o + 11] = refPositions.z(k);
@@ -364,12 +377,17 @@ final class SpatialErrors {
 
     /**
      * The poses a thread met last, for one kernel instance: pose k in slot k mod {@value #SLOTS}, its
-     * 24 values as {@link #pose} writes them. Bound to one kernel at a time (a new alignment makes a
+     * 24 values as {@link #pose} writes them. When the scratch says poses are asked in runs
+     * ({@link AssociatedColumns.Scratch#posesInRuns}), a pose not held is computed together with the
+     * next one ({@link #poses}: two slerps side by side). Bound to one kernel at a time (a new alignment makes a
      * new kernel): used with another, it forgets what it held.
      */
     static final class Window {
-        /** Number of slots (a power of two): 96 KiB of values. */
-        static final int SLOTS = 512;
+        /**
+         * Number of slots (a power of two): 192 KiB of values. As many as the interpolated reference's
+         * matrix cache ({@link InterpolatedReference.Cursor#SLOTS}), which the window's poses skip.
+         */
+        static final int SLOTS = 1024;
         private final double[] v = new double[24 * SLOTS];
         private final int[] pose = new int[SLOTS];
         private SpatialErrors owner;
@@ -383,7 +401,13 @@ final class SpatialErrors {
             int slot = k & (SLOTS - 1);
             int o = 24 * slot;
             if (pose[slot] != k) {
-                kernel.pose(k, v, o, s);
+                int next = (k + 1) & (SLOTS - 1);
+                if (s.posesInRuns && k + 1 < kernel.pairs.size() && pose[next] != k + 1) {
+                    kernel.poses(k, v, o, 24 * next, s);
+                    pose[next] = k + 1;
+                } else {
+                    kernel.pose(k, v, o, s);
+                }
                 pose[slot] = k;
             }
             return o;

@@ -39,6 +39,7 @@ final class Stride extends PairRule {
     void errorsInto(double[] trans, double[] rot) {
         par.forEachChunk(pairs, (c, from, to) -> {
             AssociatedColumns.Scratch s = new AssociatedColumns.Scratch();
+            s.posesInRuns = d == 1;
             for (int p = from; p < to; p++) {
                 poses.rpe(p * d, p * d + d, s);
                 trans[p] = s.transError;

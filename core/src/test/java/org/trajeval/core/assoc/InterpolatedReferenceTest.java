@@ -117,6 +117,73 @@ class InterpolatedReferenceTest {
         Rotations.fromQuaternion(q[0], q[1], q[2], q[3], out, 3);
     }
 
+    @Test
+    void twoPosesSideBySideEqualTheDirectlyInterpolatedPosesBitForBit() {
+        // rotationsOnce(k) as the RPE window asks (k, k + 1), with fewer, as many and more queries than
+        // segments, odd ends, and references whose neighbours are equal, antipodal or a half turn apart
+        Random rnd = new Random(516);
+        double[] expected = new double[12];
+        double[] two = new double[20];
+        for (int variant = 0; variant < 2; variant++) {
+            SpatialTrajectory ref = variant == 0 ? randomReference(rnd, 3001) : awkwardReference(rnd, 2999);
+            for (int n : new int[] {1501, 3003, 9007}) {
+                double[] stamps = queryStamps(rnd, ref, n);
+                InterpolatedReference interp = InterpolatedReference.spatial(ref, n);
+                interp.fill(k -> stamps[k], 0, n);
+                InterpolatedReference.Cursor cursor = new InterpolatedReference.Cursor();
+                for (int step : new int[] {2, 3, 1}) {
+                    for (int k = 0; k + 1 < n; k += step) {
+                        interp.rotationsOnce(k, two, 1, 11, cursor);
+                        for (int d = 0; d < 2; d++) {
+                            direct(ref, stamps[k + d], expected);
+                            for (int c = 0; c < 9; c++) {
+                                assertBits(expected[3 + c], two[1 + 10 * d + c], "rotation " + c + " of pose "
+                                        + (k + d) + " of " + n + ", variant " + variant + ", step " + step);
+                            }
+                        }
+                        if (k % 5 == 0) {
+                            interp.rotationOnce(k + 1, two, 1, cursor); // one at a time in between
+                            direct(ref, stamps[k + 1], expected);
+                            assertBits(expected[3], two[1], "rotation 0 of pose " + (k + 1) + " alone");
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    /** As {@link #randomReference}, each rotation equal, opposite (-q), a half turn from or near its predecessor. */
+    private static SpatialTrajectory awkwardReference(Random rnd, int n) {
+        SpatialTrajectory r = randomReference(rnd, n);
+        double[][] c = new double[8][n];
+        double[] q = new double[4];
+        for (int i = 0; i < n; i++) {
+            c[0][i] = r.t(i);
+            c[1][i] = r.x(i);
+            c[2][i] = r.y(i);
+            c[3][i] = r.z(i);
+            r.quaternion(i, q);
+            if (i > 0) {
+                double w = c[4][i - 1];
+                double x = c[5][i - 1];
+                double y = c[6][i - 1];
+                double z = c[7][i - 1];
+                switch (i % 5) {
+                    case 0 -> q = new double[] {w, x, y, z};
+                    case 1 -> q = new double[] {-w, -x, -y, -z};
+                    case 2 -> q = new double[] {-x, w, -z, y};
+                    case 3 -> q = new double[] {w + 1e-9, x, y - 1e-9, z};
+                    default -> q = q.clone();
+                }
+            }
+            c[4][i] = q[0];
+            c[5][i] = q[1];
+            c[6][i] = q[2];
+            c[7][i] = q[3];
+        }
+        return SpatialTrajectory.of(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]);
+    }
+
     /** A random walk with random rotations, some repeated stamps (zero-length segments). */
     private static SpatialTrajectory randomReference(Random rnd, int n) {
         double[][] c = new double[8][n];

@@ -145,10 +145,12 @@ class SpatialKernelsTest {
             for (int i = 0; i + d < m; i++) {
                 if (i % 1000 == 0) {
                     s = new AssociatedColumns.Scratch(); // a new chunk: a new cache
+                    s.posesInRuns = true; // every start: the window computes poses two at a time, as EveryStart's
                 }
                 fast.rpe(i, i + d, s);
                 same(old.rpe(i, i + d), s, what + " frames " + d + " pair " + i);
             }
+            s.posesInRuns = false; // consecutive pairs: one pose at a time, as Stride's for d > 1
             for (int i = 0; i + d < m; i += d) {
                 fast.rpe(i, i + d, s);
                 same(old.rpe(i, i + d), s, what + " consecutive frames " + d + " pair " + i);
@@ -156,6 +158,7 @@ class SpatialKernelsTest {
         }
         for (double delta : new double[] {0.05, 1.0}) {
             AssociatedColumns.Scratch s = new AssociatedColumns.Scratch();
+            s.posesInRuns = true;
             int j = 0;
             for (int i = 0; i < m; i++) {
                 j = Math.max(j, i);

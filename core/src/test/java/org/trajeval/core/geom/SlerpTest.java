@@ -75,6 +75,64 @@ class SlerpTest {
     }
 
     @Test
+    void twoSlerpsSideBySideEqualOneCallEachBitForBit() {
+        // atBoth on two segments (following, unrelated, the same slerp twice) against one call each,
+        // with parallel, antipodal and half-turn ends and the fractions 0 and 1 on either side
+        Random rnd = new Random(74);
+        Slerp x = new Slerp();
+        Slerp y = new Slerp();
+        double[] gotX = new double[4];
+        double[] gotY = new double[6];
+        double[] want = new double[4];
+        for (int i = 0; i < 20000; i++) {
+            double[] q0 = randomQuaternion(rnd);
+            double[] q1 = awkwardNeighbour(q0, i, rnd);
+            double[] q2 = awkwardNeighbour(q1, i / 9, rnd);
+            x.ends(q0[0], q0[1], q0[2], q0[3], q1[0], q1[1], q1[2], q1[3]);
+            int shape = i % 3;
+            double[] y0 = shape == 0 ? q1 : shape == 1 ? randomQuaternion(rnd) : q0;
+            double[] y1 = shape == 2 ? q1 : q2;
+            if (shape == 0) {
+                y.follow(x, q2[0], q2[1], q2[2], q2[3]);
+            } else if (shape == 1) {
+                y.ends(y0[0], y0[1], y0[2], y0[3], y1[0], y1[1], y1[2], y1[3]);
+            }
+            Slerp second = shape == 2 ? x : y;
+            if (i % 10 == 9) {
+                x.at(0.5, gotX, 0); // the arc of x already known
+            }
+            double fx = i % 23 == 0 ? 0.0 : i % 29 == 0 ? 1.0 : rnd.nextDouble();
+            double fy = i % 31 == 0 ? 0.0 : i % 37 == 0 ? 1.0 : rnd.nextDouble();
+            Slerp.atBoth(x, fx, gotX, 0, second, fy, gotY, 2);
+            quaternionSlerp(q0, q1, fx, want);
+            assertBitsEqual(want, gotX, "first, case " + i + ", f = " + fx);
+            quaternionSlerp(y0, y1, fy, want);
+            assertBitsEqual(want, new double[] {gotY[2], gotY[3], gotY[4], gotY[5]}, "second, case " + i + ", f = " + fy);
+        }
+    }
+
+    /** q itself, -q, q nudged by about 1e-9, q turned by a half turn or a half turn less 1e-7 rad, or a random one. */
+    private static double[] awkwardNeighbour(double[] q, int i, Random rnd) {
+        switch (i % 7) {
+            case 0:
+                return q.clone();
+            case 1:
+                return scaled(q, -1.0);
+            case 2:
+                return new double[] {q[0] + 1e-9, q[1] - 1e-9, q[2], q[3]};
+            case 3:
+                return new double[] {-q[1], q[0], -q[3], q[2]}; // q times (0, 1, 0, 0): a half turn, a . b = 0
+            case 4: {
+                double c = Math.cos((Math.PI - 1e-7) / 2);
+                double s = Math.sin((Math.PI - 1e-7) / 2);
+                return new double[] {c * q[0] - s * q[3], c * q[1] + s * q[2], c * q[2] - s * q[1], c * q[3] + s * q[0]};
+            }
+            default:
+                return i % 2 == 0 ? nudged(q, rnd) : randomQuaternion(rnd);
+        }
+    }
+
+    @Test
     void rotationsSlerpIsOneSlerpCall() {
         Random rnd = new Random(73);
         double[] got = new double[5];
