@@ -16,7 +16,7 @@ import java.util.concurrent.atomic.AtomicInteger;
  * into a segment of its own; segments are appended to the columns in file order, with the
  * timestamp-order check across each block edge. Only a clean file is read this way: on anything
  * else (a refusal, a quote, a header not in the first block, an order problem at an edge, too many
- * poses) {@link #read} returns null and the caller reads the file as a whole, which then says
+ * poses, a size that changed while it was read) {@link #read} returns null and the caller reads the file as a whole, which then says
  * what it says today (the first bad line in file order).
  */
 final class BlockRead {
@@ -228,6 +228,10 @@ final class BlockRead {
                     throw FileProblems.tooManyBytes(source, total, options.maxBytes());
                 }
             }
+        }
+        if (total != starts[starts.length - 1]) { // it grew or shrank: the blocks hold other bytes
+            throw new IOException(source + " changed while it was read (" + total + " bytes, not "
+                    + starts[starts.length - 1] + ")");
         }
         return HexFormat.of().formatHex(md.digest());
     }

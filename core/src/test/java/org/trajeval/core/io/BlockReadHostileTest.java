@@ -13,6 +13,7 @@ import java.nio.ByteBuffer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.SplittableRandom;
@@ -124,6 +125,26 @@ class BlockReadHostileTest {
         for (int block : new int[] {1, 64, 500}) {
             assertNull(assertSameOutcome(f, ReadOptions.defaults().withLimits(size, 200), block));
         }
+    }
+
+    @Test
+    void fileGrowingWhileReadGivesHashAndValuesOfTheSameBytes() throws IOException {
+        String text = BlockReadTest.tum(new SplittableRandom(14), 200, false);
+        StringBuilder more = new StringBuilder();
+        for (int i = 0; i < 30; i++) {
+            more.append(1.4e9 + i).append(" 1 2 3 0 0 0 1\n");
+        }
+        Path f = Files.writeString(dir.resolve("grow.tum"), text);
+        AtomicBoolean grown = new AtomicBoolean();
+        ByteSource growing = new Changing(f, () -> {
+            if (grown.compareAndSet(false, true)) {
+                Files.writeString(f, more, StandardOpenOption.APPEND);
+            }
+        });
+        LoadedTrajectory blocks = BlockRead.read(growing, f.toString(), ReadOptions.defaults(),
+                new TumReader.Blocks(f.toString(), ReadOptions.defaults(), ""), threads(500));
+        assertTrue(grown.get());
+        assertConsistent(blocks, f, text);
     }
 
     @Test
