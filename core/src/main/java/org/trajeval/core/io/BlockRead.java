@@ -252,6 +252,9 @@ final class BlockRead {
             while (format.readBatch(rows, poses, in, row)) {
                 // batches, as the whole-file readers
             }
+            if (!lines.rangeRead()) { // the file shrank after it was cut (and perhaps hashed)
+                throw new IllegalStateException(source + " ended before byte " + starts[block + 1]);
+            }
             append(block, poses);
         } finally {
             lines.close();

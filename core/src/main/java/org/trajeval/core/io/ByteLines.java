@@ -323,6 +323,11 @@ final class ByteLines implements Closeable {
     }
 
     /** @return the file size when it was opened (bytes), 0 if unknown */
+    /** @return for a range ({@link #range}): true once every byte of it was read, false while (or if the file ended before) */
+    boolean rangeRead() {
+        return unread == 0;
+    }
+
     long expectedBytes() {
         return expectedBytes;
     }

@@ -165,6 +165,28 @@ class BlockReadHostileTest {
     }
 
     @Test
+    void fileShrinkingAfterItWasHashedGivesHashAndValuesOfTheSameBytes() throws IOException {
+        String text = BlockReadTest.tum(new SplittableRandom(19), 200, false);
+        Path f = Files.writeString(dir.resolve("shrinklate.tum"), text);
+        int cut = text.indexOf('\n', text.length() / 3) + 1;
+        AtomicBoolean shrunk = new AtomicBoolean();
+        ByteSource hashedThenShrunk = new Changing(f, () -> { }) {
+            @Override
+            public InputStream open() throws IOException {
+                byte[] all = Files.readAllBytes(f); // the hash reads the file as it was
+                if (shrunk.compareAndSet(false, true)) {
+                    Files.writeString(f, text.substring(0, cut));
+                }
+                return new java.io.ByteArrayInputStream(all);
+            }
+        };
+        LoadedTrajectory blocks = BlockRead.read(hashedThenShrunk, f.toString(), ReadOptions.defaults(),
+                new TumReader.Blocks(f.toString(), ReadOptions.defaults(), ""), threads(300));
+        assertTrue(shrunk.get());
+        assertConsistent(blocks, f, text);
+    }
+
+    @Test
     void blockThatCannotBeOpenedFallsBackWithoutHangingAndThePoolStaysUsable() throws IOException {
         Path f = Files.writeString(dir.resolve("fail.tum"), BlockReadTest.tum(new SplittableRandom(17), 300, false));
         ByteSource failing = new ByteSource() {
