@@ -19,7 +19,6 @@ import java.util.List;
 import java.util.SplittableRandom;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
-import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
@@ -90,6 +89,27 @@ class BlockReadHostileTest {
                 for (int block = 1; block < 12; block++) {
                     assertNotNull(assertSameOutcome(f, ReadOptions.defaults(), block), f + " " + block);
                 }
+            }
+        }
+    }
+
+    @Test
+    void quotesOnlyInAnUnusedColumnOrAfterTheFirstBlockAndOtherDelimitersReadAsTheWholeFile() throws IOException {
+        String data = BlockReadTest.csv(new SplittableRandom(20), 120, false);
+        String body = data.substring(data.indexOf('\n') + 1);
+        String[] lines = body.split("\n", -1);
+        String[] quoted = lines.clone();
+        quoted[70] = quoted[70] + ",\"a, \"\"b\"\"\nstill the note\"";
+        String[] texts = {"t,x,y,yaw,\"note\"\n" + body, "t,x,y,yaw,note\n" + String.join("\n", quoted),
+            "t,x,y,yaw\n" + body.replace(",", ";"), "t\tx\ty\tyaw\n" + body.replace(",", "\t")};
+        ReadOptions[] options = {ReadOptions.defaults(), ReadOptions.defaults(),
+            ReadOptions.defaults().withCsv(new CsvLayout("t", "x", "y", "yaw", ';', TimeUnit.S)),
+            ReadOptions.defaults().withCsv(new CsvLayout("t", "x", "y", "yaw", '\t', TimeUnit.MS))};
+        texts[2] = texts[2].replace("t,x,y,yaw", "t;x;y;yaw");
+        for (int k = 0; k < texts.length; k++) {
+            Path f = Files.writeString(dir.resolve("q" + k + ".csv"), texts[k]);
+            for (int block : new int[] {1, 30, 97, 500, 1500}) {
+                assertSameOutcome(f, options[k], block);
             }
         }
     }
@@ -250,7 +270,7 @@ class BlockReadHostileTest {
         }
         ExecutorService own = Executors.newFixedThreadPool(2);
         own.shutdownNow();
-        assertTrue(own.awaitTermination(10, TimeUnit.SECONDS));
+        assertTrue(own.awaitTermination(10, java.util.concurrent.TimeUnit.SECONDS));
         ReadThreads rejected = new ReadThreads(own, 3, 200); // helpers refused: the caller reads every block
         assertFalse(outcome(() -> TrajectoryReader.read(f, ReadOptions.defaults(), rejected)).startsWith("refused"));
         assertEquals(outcome(() -> TrajectoryReader.read(f, ReadOptions.defaults())),
