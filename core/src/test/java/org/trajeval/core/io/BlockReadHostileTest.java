@@ -79,6 +79,30 @@ class BlockReadHostileTest {
     }
 
     @Test
+    void crlfFileAndEveryDecreasingOrRepeatedStampGiveTheWholeFileReadsOutcomeWithTheEdgeAtEveryByte()
+            throws IOException {
+        String crlf = BlockReadTest.tum(new SplittableRandom(21), 12, false).replace("\n", "\r\n");
+        Path f = Files.writeString(dir.resolve("crlf.tum"), crlf);
+        for (int block = 1; block <= 120; block++) { // the nominal edge falls on every byte of the first lines
+            assertNull(assertSameOutcome(f, ReadOptions.defaults(), block));
+        }
+        String[] lines = BlockReadTest.tum(new SplittableRandom(22), 12, false).split("\n", -1);
+        ReadOptions keep = ReadOptions.defaults().withDuplicates(DuplicateTimestamps.KEEP);
+        for (int at = 1; at < 12; at++) {
+            for (int back = 1; back <= Math.min(2, at); back++) {
+                String[] copy = lines.clone();
+                copy[at] = copy[at - back].substring(0, stampEnd(copy[at - back])) + copy[at].substring(
+                        stampEnd(copy[at]));
+                Path g = Files.writeString(dir.resolve("stamp" + at + "_" + back + ".tum"), String.join("\n", copy));
+                for (int block = 1; block <= 90; block += 3) {
+                    assertNotNull(assertSameOutcome(g, ReadOptions.defaults(), block));
+                    assertEquals(back == 1, assertSameOutcome(g, keep, block) == null);
+                }
+            }
+        }
+    }
+
+    @Test
     void emptyBomOnlyHeaderOnlyAndNewlineOnlyFilesAreRefusedAsAWhole() throws IOException {
         String[] texts = {"", "\uFEFF", "\uFEFF\n", "\n".repeat(50), "\r\n".repeat(40), "t,x,y,yaw",
             "t,x,y,yaw\n", "t,x,y,yaw\r\n" + "\r\n".repeat(30), "# only\n".repeat(30), "\0".repeat(100)};
