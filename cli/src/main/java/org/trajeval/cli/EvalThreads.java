@@ -1,5 +1,7 @@
 package org.trajeval.cli;
 
+import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
@@ -50,6 +52,9 @@ final class EvalThreads implements AutoCloseable {
                 TrajectoryReader.read(estimate, estOptions)};
         }
         ReadThreads readers = ReadThreads.forPair(pool, threads, reference, estimate);
+        if (readers != ReadThreads.ONE && sizeOf(estimate) > sizeOf(reference)) {
+            return biggerEstimateHere(readers, refOptions, reference, estOptions, estimate);
+        }
         Future<LoadedTrajectory> est = pool.submit(() -> TrajectoryReader.read(estimate, estOptions, readers));
         LoadedTrajectory ref;
         try {
@@ -59,6 +64,34 @@ final class EvalThreads implements AutoCloseable {
             throw e;
         }
         return new LoadedTrajectory[] {ref, join(est)};
+    }
+
+    /**
+     * The bigger file on this thread and the smaller on the pool's, so that the pool thread, once
+     * the smaller file is read, takes its queued turn at the bigger file's blocks (read the other
+     * way round, the bigger file's helper waits behind it in the pool and it is parsed by one thread
+     * after a separate hashing pass). A refusal of the reference still comes first, as when the
+     * reference is read here.
+     */
+    private LoadedTrajectory[] biggerEstimateHere(ReadThreads readers, ReadOptions refOptions, Path reference,
+            ReadOptions estOptions, Path estimate) {
+        Future<LoadedTrajectory> ref = pool.submit(() -> TrajectoryReader.read(reference, refOptions, readers));
+        LoadedTrajectory est;
+        try {
+            est = TrajectoryReader.read(estimate, estOptions, readers);
+        } catch (RuntimeException e) {
+            join(ref);
+            throw e;
+        }
+        return new LoadedTrajectory[] {join(ref), est};
+    }
+
+    private static long sizeOf(Path file) {
+        try {
+            return Files.size(file);
+        } catch (IOException | RuntimeException e) {
+            return -1;
+        }
     }
 
     @Override
