@@ -1,7 +1,5 @@
 package org.trajeval.cli;
 
-import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
@@ -52,7 +50,7 @@ final class EvalThreads implements AutoCloseable {
                 TrajectoryReader.read(estimate, estOptions)};
         }
         ReadThreads readers = ReadThreads.forPair(pool, threads, reference, estimate);
-        if (readers != ReadThreads.ONE && sizeOf(estimate) > sizeOf(reference)) {
+        if (readers.readSecondHere()) {
             return biggerEstimateHere(readers, refOptions, reference, estOptions, estimate);
         }
         Future<LoadedTrajectory> est = pool.submit(() -> TrajectoryReader.read(estimate, estOptions, readers));
@@ -67,11 +65,8 @@ final class EvalThreads implements AutoCloseable {
     }
 
     /**
-     * The bigger file on this thread and the smaller on the pool's, so that the pool thread, once
-     * the smaller file is read, takes its queued turn at the bigger file's blocks (read the other
-     * way round, the bigger file's helper waits behind it in the pool and it is parsed by one thread
-     * after a separate hashing pass). A refusal of the reference still comes first, as when the
-     * reference is read here.
+     * The bigger estimate on this thread and the reference on the pool's ({@link ReadThreads#readSecondHere});
+     * a refusal of the reference still comes first, as when the reference is read here.
      */
     private LoadedTrajectory[] biggerEstimateHere(ReadThreads readers, ReadOptions refOptions, Path reference,
             ReadOptions estOptions, Path estimate) {
@@ -84,14 +79,6 @@ final class EvalThreads implements AutoCloseable {
             throw e;
         }
         return new LoadedTrajectory[] {join(ref), est};
-    }
-
-    private static long sizeOf(Path file) {
-        try {
-            return Files.size(file);
-        } catch (IOException | RuntimeException e) {
-            return -1;
-        }
     }
 
     @Override

@@ -23,6 +23,7 @@ public final class ReadThreads {
     private final Executor helpers;
     private final int threads;
     private final long blockBytes;
+    private final boolean secondBigger;
     private final CopyOnWriteArrayList<BlockRead> active = new CopyOnWriteArrayList<>();
 
     /**
@@ -47,26 +48,43 @@ public final class ReadThreads {
         if (threads < 2) {
             return ONE;
         }
-        if (threads > 2) {
-            return new ReadThreads(helpers, threads);
-        }
+        long x;
+        long y;
         try {
-            long x = Files.size(a);
-            long y = Files.size(b);
-            return Math.max(x, y) >= 2 * Math.min(x, y) ? new ReadThreads(helpers, threads) : ONE;
+            x = Files.size(a);
+            y = Files.size(b);
         } catch (IOException | RuntimeException e) {
-            return ONE; // not a plain file (a bag topic, say): read as before
+            return threads > 2 ? new ReadThreads(helpers, threads) : ONE; // not a plain file (a bag topic, say)
         }
+        if (threads == 2 && Math.max(x, y) < 2 * Math.min(x, y)) {
+            return ONE;
+        }
+        return new ReadThreads(helpers, threads, BLOCK_BYTES, y > x);
     }
 
-    /** As above with another block size (tests force small blocks). */
+    /**
+     * @return true if the second file of the pair ({@link #forPair}'s {@code b}) is the bigger one: the
+     *     caller should read it on its own thread and hand the smaller one to the pool, whose thread then
+     *     runs its queued turn at the bigger file's blocks once the smaller is read (the other way round,
+     *     that turn waits behind the bigger file itself, and one thread hashes and then parses every block)
+     */
+    public boolean readSecondHere() {
+        return secondBigger;
+    }
+
+    /** Threads that cut files into blocks of {@code blockBytes} (tests force small blocks). */
     ReadThreads(Executor helpers, int threads, long blockBytes) {
+        this(helpers, threads, blockBytes, false);
+    }
+
+    private ReadThreads(Executor helpers, int threads, long blockBytes, boolean secondBigger) {
         if (threads > 1 && helpers == null) {
             throw new IllegalArgumentException("more than one thread needs an executor");
         }
         this.helpers = helpers;
         this.threads = Math.max(1, threads);
         this.blockBytes = blockBytes;
+        this.secondBigger = secondBigger;
     }
 
     /** @return true if a file of {@code size} bytes is read in blocks (at least two blocks, two threads) */

@@ -185,8 +185,7 @@ class BlockReadHostileTest {
                 Files.writeString(f, more, StandardOpenOption.APPEND);
             }
         });
-        LoadedTrajectory blocks = BlockRead.read(growing, f.toString(), ReadOptions.defaults(),
-                new TumReader.Blocks(f.toString(), ReadOptions.defaults(), ""), threads(500));
+        LoadedTrajectory blocks = tumInBlocks(growing, f, threads(500));
         assertTrue(grown.get());
         assertConsistent(blocks, f, text);
     }
@@ -202,8 +201,7 @@ class BlockReadHostileTest {
                 Files.writeString(f, text.substring(0, cut));
             }
         });
-        LoadedTrajectory blocks = BlockRead.read(shrinking, f.toString(), ReadOptions.defaults(),
-                new TumReader.Blocks(f.toString(), ReadOptions.defaults(), ""), threads(500));
+        LoadedTrajectory blocks = tumInBlocks(shrinking, f, threads(500));
         assertTrue(shrunk.get());
         assertConsistent(blocks, f, text);
     }
@@ -224,8 +222,7 @@ class BlockReadHostileTest {
                 return new java.io.ByteArrayInputStream(all);
             }
         };
-        LoadedTrajectory blocks = BlockRead.read(hashedThenShrunk, f.toString(), ReadOptions.defaults(),
-                new TumReader.Blocks(f.toString(), ReadOptions.defaults(), ""), threads(300));
+        LoadedTrajectory blocks = tumInBlocks(hashedThenShrunk, f, threads(300));
         assertTrue(shrunk.get());
         assertConsistent(blocks, f, text);
     }
@@ -264,12 +261,10 @@ class BlockReadHostileTest {
         };
         ReadThreads threads = threads(300);
         for (int i = 0; i < 5; i++) {
-            assertNull(BlockRead.read(failing, f.toString(), ReadOptions.defaults(),
-                    new TumReader.Blocks(f.toString(), ReadOptions.defaults(), ""), threads));
+            assertNull(tumInBlocks(failing, f, threads));
         }
         assertSameOutcome(f, ReadOptions.defaults(), 300);
-        assertEquals(300, BlockRead.read(ByteSource.of(f), f.toString(), ReadOptions.defaults(),
-                new TumReader.Blocks(f.toString(), ReadOptions.defaults(), ""), threads).trajectory().size());
+        assertEquals(300, tumInBlocks(ByteSource.of(f), f, threads).trajectory().size());
     }
 
     @Test
@@ -358,6 +353,12 @@ class BlockReadHostileTest {
         assertEquals(same.sha256(), blocks.sha256(), "the hash is of neither the file now nor as it was");
         assertEquals(describe(same.trajectory()), describe(blocks.trajectory()),
                 "the values are not those of the bytes hashed");
+    }
+
+    /** A TUM file read in blocks from {@code source}, with the default options. */
+    private static LoadedTrajectory tumInBlocks(ByteSource source, Path f, ReadThreads threads) {
+        return BlockRead.read(source, f.toString(), ReadOptions.defaults(),
+                new TumReader.Blocks(f.toString(), ReadOptions.defaults(), ""), threads);
     }
 
     private static ReadThreads threads(int block) {

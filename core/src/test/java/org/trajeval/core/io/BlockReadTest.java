@@ -175,6 +175,16 @@ class BlockReadTest {
         assertEquals(ReadThreads.ONE, ReadThreads.forPair(pool, 2, small, dir.resolve("missing.tum")));
     }
 
+    @Test
+    void theBiggerSecondFileIsReadOnTheCallingThread() throws IOException {
+        Path small = write("s.tum", "1 0 0 0 0 0 0 1\n");
+        Path big = write("b.tum", "1 0 0 0 0 0 0 1\n".repeat(3));
+        assertTrue(ReadThreads.forPair(pool, 2, small, big).readSecondHere());
+        assertTrue(!ReadThreads.forPair(pool, 2, big, small).readSecondHere());
+        assertTrue(!ReadThreads.forPair(pool, 2, big, big).readSecondHere());
+        assertTrue(!ReadThreads.ONE.readSecondHere());
+    }
+
     private static ReadThreads threads(int block) {
         return new ReadThreads(pool, 3, block);
     }
