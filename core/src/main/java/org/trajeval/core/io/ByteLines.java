@@ -38,6 +38,8 @@ final class ByteLines implements Closeable {
     /** Offset just past the last '\n' read into buf (0 when there is none after pos). */
     private int complete;
     private boolean eof;
+    /** True once {@link #buf} no longer starts with the file's first byte (its lines were moved down). */
+    private boolean shifted;
     private boolean started;
     private long bytesRead;
     private long lineNumber;
@@ -94,7 +96,7 @@ final class ByteLines implements Closeable {
             long size = file.size();
             ByteLines lines = new ByteLines(source, file.open(), maxBytes, size);
             if (size > SAMPLES * SAMPLE_BYTES) {
-                lines.sampledBytesPerLine = sampleLineLength(file, size);
+                lines.toSample = file;
             }
             return lines;
         } catch (IOException | SecurityException e) {
@@ -107,6 +109,8 @@ final class ByteLines implements Closeable {
     /** Bytes read at each sampled place. */
     static final int SAMPLE_BYTES = 1 << 14;
     private double sampledBytesPerLine = Double.NaN;
+    /** The file whose line length {@link #sampledBytesPerLine()} samples when first asked; null once sampled (or too small). */
+    private ByteSource toSample;
 
     /**
      * @return mean line length (bytes, line end included) over {@link #SAMPLES} stretches of
@@ -115,41 +119,100 @@ final class ByteLines implements Closeable {
      */
     static double sampleLineLength(ByteSource file, long size) {
         java.nio.ByteBuffer buf = java.nio.ByteBuffer.allocate(SAMPLE_BYTES);
-        long spanned = 0;
-        long lines = 0;
+        long[] spannedAndLines = new long[2];
         try {
             for (int k = 0; k < SAMPLES; k++) {
                 buf.clear();
-                long at = (size - SAMPLE_BYTES) * k / (SAMPLES - 1);
+                long at = sampleStart(size, k);
                 while (buf.hasRemaining() && file.readAt(at + buf.position(), buf) > 0) {
                     // a regular file fills the buffer in one or two reads
                 }
-                byte[] b = buf.array();
-                int first = -1;
-                int last = -1;
-                int newlines = 0;
-                for (int i = 0; i < buf.position(); i++) {
-                    if (b[i] == '\n') {
-                        if (first < 0) {
-                            first = i;
-                        }
-                        last = i;
-                        newlines++;
-                    }
-                }
-                if (newlines >= 2) {
-                    spanned += last - first;
-                    lines += newlines - 1;
-                }
+                countLines(buf.array(), 0, buf.position(), spannedAndLines);
             }
         } catch (IOException e) {
             return Double.NaN; // only a size hint: the real read reports any problem
         }
-        return lines > 0 ? (double) spanned / lines : Double.NaN;
+        return meanLineLength(spannedAndLines);
     }
 
-    /** @return mean line length sampled over the whole file (bytes, line end included), NaN when not sampled */
+    /**
+     * {@link #sampleLineLength(ByteSource, long)} of a file whose {@code size} bytes are all in
+     * {@code b}, from its index 0: the same stretches, read from memory (no open, no read).
+     */
+    static double sampleLineLength(byte[] b, long size) {
+        long[] spannedAndLines = new long[2];
+        for (int k = 0; k < SAMPLES; k++) {
+            int at = (int) sampleStart(size, k);
+            countLines(b, at, (int) Math.min(SAMPLE_BYTES, size - at), spannedAndLines);
+        }
+        return meanLineLength(spannedAndLines);
+    }
+
+    /** @return the file offset of sampled stretch {@code k}: the stretches spread evenly from the first byte to the last */
+    private static long sampleStart(long size, int k) {
+        return (size - SAMPLE_BYTES) * k / (SAMPLES - 1);
+    }
+
+    /**
+     * Adds to {@code acc} the bytes from the first to the last '\n' of {@code b[from, from + length)}
+     * ({@code acc[0]}) and the lines they hold ({@code acc[1]}: the '\n's less one), when there are two or more.
+     */
+    private static void countLines(byte[] b, int from, int length, long[] acc) {
+        int to = from + length;
+        int first = indexOfNewline(b, from, to);
+        if (first < 0) {
+            return;
+        }
+        int last = to - 1;
+        while (b[last] != '\n') {
+            last--;
+        }
+        if (last > first) {
+            acc[0] += last - first;
+            acc[1] += countNewlines(b, first, last + 1) - 1;
+        }
+    }
+
+    private static final long LOW_SEVEN_BITS = 0x7F7F7F7F7F7F7F7FL;
+
+    /**
+     * @return the number of '\n' in {@code b[from..to)}, eight bytes at a time: in {@code x = w ^ NEWLINES}
+     *     a byte is zero exactly where w has '\n'; {@code ((x & 0x7F..) + 0x7F.. | x) & HIGHS} flags
+     *     every non-zero byte (the sum stays within each byte, so no byte disturbs another)
+     */
+    static int countNewlines(byte[] b, int from, int to) {
+        int count = 0;
+        int i = from;
+        for (; i + 8 <= to; i += 8) {
+            long x = (long) LONGS.get(b, i) ^ NEWLINES;
+            long nonZero = (((x & LOW_SEVEN_BITS) + LOW_SEVEN_BITS) | x) & HIGHS;
+            count += 8 - Long.bitCount(nonZero);
+        }
+        for (; i < to; i++) {
+            if (b[i] == '\n') {
+                count++;
+            }
+        }
+        return count;
+    }
+
+    private static double meanLineLength(long[] spannedAndLines) {
+        return spannedAndLines[1] > 0 ? (double) spannedAndLines[0] / spannedAndLines[1] : Double.NaN;
+    }
+
+    /**
+     * @return mean line length sampled over the whole file (bytes, line end included), NaN when not
+     *     sampled (a file of at most {@link #SAMPLES} times {@link #SAMPLE_BYTES}). Sampled when
+     *     first asked: from the buffer when the whole file is in it (a file within one block read,
+     *     no further open or read), else from the file.
+     */
     double sampledBytesPerLine() {
+        if (toSample != null) {
+            ByteSource file = toSample;
+            toSample = null;
+            sampledBytesPerLine = !shifted && bytesRead == expectedBytes ? sampleLineLength(buf, expectedBytes)
+                    : sampleLineLength(file, expectedBytes);
+        }
         return sampledBytesPerLine;
     }
 
@@ -250,6 +313,7 @@ final class ByteLines implements Closeable {
 
     private void fill() {
         if (pos > 0) {
+            shifted = true;
             int keep = limit - pos;
             System.arraycopy(buf, pos, buf, 0, keep);
             scanFrom -= pos;

@@ -55,18 +55,23 @@ final class FormatDetector {
         if (text.startsWith("\uFEFF")) {
             text = text.substring(1);
         }
-        List<String> lines = new ArrayList<>(List.of(text.split("\n", -1)));
-        if (!complete && lines.size() > 1) {
-            lines.remove(lines.size() - 1); // a partial line
-        }
         String name = file.fileName().toLowerCase(Locale.ROOT);
         String ext = name.lastIndexOf('.') >= 0 ? name.substring(name.lastIndexOf('.') + 1) : "";
 
         String firstNonBlank = null;
         String firstData = null;
         long dataLine = 0;
-        for (int i = 0; i < lines.size(); i++) {
-            String line = lines.get(i).strip();
+        // the lines of the head up to the first data line: text between '\n's, the last one
+        // (after the last '\n') left out when the file goes on past the head (a partial line),
+        // unless it is the only one
+        int from = 0;
+        for (int i = 0; from >= 0; i++) {
+            int nl = text.indexOf('\n', from);
+            if (nl < 0 && !complete && i > 0) {
+                break;
+            }
+            String line = (nl < 0 ? text.substring(from) : text.substring(from, nl)).strip();
+            from = nl < 0 ? -1 : nl + 1;
             if (line.isEmpty()) {
                 continue;
             }

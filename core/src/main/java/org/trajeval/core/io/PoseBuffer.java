@@ -69,6 +69,24 @@ final class PoseBuffer {
      * @throws InputException when the pose limit is exceeded
      */
     int add(double[] row, long line) {
+        checkPositions(row, line);
+        int i = place(row[0], line);
+        if (i < 0) {
+            return -i;
+        }
+        for (int c = 0; c < columns.length; c++) {
+            columns[c][i] = row[c];
+        }
+        return ACCEPTED;
+    }
+
+    /**
+     * The first step of {@link #add}: refuses a position beyond {@link #MAX_POSITION_M}, the
+     * positions being {@code row[1]}, {@code row[2]}, ... (as many as {@link #positions} named).
+     *
+     * @throws InputException {@link InputProblem#OUT_OF_RANGE} for the first such position
+     */
+    void checkPositions(double[] row, long line) {
         for (int c = 0; c < positionNames.length; c++) {
             if (!(Math.abs(row[c + 1]) <= MAX_POSITION_M)) {
                 throw new InputException(source, line, positionNames[c], InputProblem.OUT_OF_RANGE,
@@ -76,24 +94,39 @@ final class PoseBuffer {
                         Double.toString(row[c + 1]));
             }
         }
-        double t = row[0];
+    }
+
+    /**
+     * The second step of {@link #add}, for a reader that stores a pose's values itself (in another
+     * order than it read them): checks the timestamp {@code t} (s) against the one before and makes
+     * room for one more pose. The caller then stores every column's value at the index returned,
+     * in {@link #liveColumns()} fetched after this call (a growth replaces the columns), before the
+     * next call.
+     *
+     * @return the pose's index, or (only when refusing unsorted input) {@code -DECREASING} or
+     *     {@code -DUPLICATE}, nothing taken, for {@link #orderProblem}
+     * @throws InputException when the pose limit is exceeded
+     */
+    int place(double t, long line) {
         if (lines == null && n > 0 && !(t > lastT) && !(keepDuplicates && t == lastT)) {
-            return t < lastT ? DECREASING : DUPLICATE;
+            return t < lastT ? -DECREASING : -DUPLICATE;
         }
         if (n == columns[0].length || n >= maxPoses) {
             grow(line);
         }
         final int i = n;
-        for (int c = 0; c < columns.length; c++) {
-            columns[c][i] = row[c];
-        }
         if (lines != null) {
             lines[i] = line;
         }
         n = i + 1;
         lastT = t;
         lastLine = line;
-        return ACCEPTED;
+        return i;
+    }
+
+    /** @return the columns themselves, not a copy, for {@link #place} (valid until the next {@link #place} or {@link #add}) */
+    double[][] liveColumns() {
+        return columns;
     }
 
     /**

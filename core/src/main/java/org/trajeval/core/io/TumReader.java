@@ -35,9 +35,8 @@ final class TumReader {
                     options.duplicates(), options.maxPoses()).positions("tx", "ty", "tz");
             poses.sizeFrom(lines);
             double[] in = new double[8];
-            double[] row = new double[8];
             double tolerance = options.quaternionTolerance();
-            while (readBatch(rows, poses, in, row, tolerance, source)) {
+            while (readBatch(rows, poses, in, tolerance, source)) {
                 // batches: compiled early as a whole method (see CsvTrajectoryReader.readBatch)
             }
             double[][] c = poses.finishUntrimmed("it holds only comment or blank lines");
@@ -54,9 +53,12 @@ final class TumReader {
         return rows;
     }
 
-    /** Reads up to 4096 poses; @return false at the end of the file. */
-    static boolean readBatch(NumericRows rows, PoseBuffer poses, double[] in, double[] row, double tolerance,
-            String source) {
+    /**
+     * Reads up to 4096 poses, each line's numbers into {@code in} (file order), then checked and
+     * stored straight into the columns, the quaternion moved from the file's {@code qx qy qz qw}
+     * to the columns' {@code qw qx qy qz}; @return false at the end of the file.
+     */
+    static boolean readBatch(NumericRows rows, PoseBuffer poses, double[] in, double tolerance, String source) {
         for (int k = 0; k < 4096; k++) {
             if (!rows.next(in)) {
                 return false;
@@ -72,18 +74,20 @@ final class TumReader {
                         rows.selectedText(4) + " " + rows.selectedText(5) + " " + rows.selectedText(6) + " "
                                 + rows.selectedText(7));
             }
-            row[0] = in[0];
-            row[1] = in[1];
-            row[2] = in[2];
-            row[3] = in[3];
-            row[4] = in[7];
-            row[5] = in[4];
-            row[6] = in[5];
-            row[7] = in[6];
-            int code = poses.add(row, line);
-            if (code != PoseBuffer.ACCEPTED) {
-                throw poses.orderProblem(code, row[0], line, rows.selectedText(0));
+            poses.checkPositions(in, line);
+            int i = poses.place(in[0], line);
+            if (i < 0) {
+                throw poses.orderProblem(-i, in[0], line, rows.selectedText(0));
             }
+            double[][] c = poses.liveColumns();
+            c[0][i] = in[0];
+            c[1][i] = in[1];
+            c[2][i] = in[2];
+            c[3][i] = in[3];
+            c[4][i] = in[7];
+            c[5][i] = in[4];
+            c[6][i] = in[5];
+            c[7][i] = in[6];
         }
         return true;
     }
@@ -123,7 +127,7 @@ final class TumReader {
 
         @Override
         public boolean readBatch(NumericRows rows, PoseBuffer poses, double[] in, double[] row) {
-            return TumReader.readBatch(rows, poses, in, row, options.quaternionTolerance(), source);
+            return TumReader.readBatch(rows, poses, in, options.quaternionTolerance(), source);
         }
 
         @Override

@@ -43,6 +43,97 @@ class ByteLinesTest {
     }
 
     @Test
+    void aFileWithinOneBlockIsSampledFromMemoryAsTheFileItselfIsSampled(@TempDir Path dir) throws IOException {
+        // 700 kB of lines growing from 10 to about 60 bytes: more than the sampled stretches, less than a block
+        Path file = Files.writeString(dir.resolve("within.txt"), growingLines(700_000));
+        double fromFile = ByteLines.sampleLineLength(ByteSource.of(file), Files.size(file));
+        int[] sampledReads = {0};
+        ByteSource counted = new ByteSource() {
+            private final ByteSource local = ByteSource.of(file);
+
+            @Override
+            public java.io.InputStream open() throws IOException {
+                return local.open();
+            }
+
+            @Override
+            public long size() throws IOException {
+                return local.size();
+            }
+
+            @Override
+            public String fileName() {
+                return local.fileName();
+            }
+
+            @Override
+            public int readAt(long position, java.nio.ByteBuffer dst) throws IOException {
+                sampledReads[0]++;
+                return local.readAt(position, dst);
+            }
+        };
+        try (ByteLines lines = ByteLines.open(counted, "within.txt", Long.MAX_VALUE)) {
+            assertTrue(lines.next());
+            assertTrue(fromFile > 10 && fromFile < 70, "sampled " + fromFile);
+            assertEquals(fromFile, lines.sampledBytesPerLine());
+            assertEquals(0, sampledReads[0], "reads of the file to sample it");
+        }
+    }
+
+    @Test
+    void aFileBeyondOneBlockIsSampledFromTheFileWhenFirstAsked(@TempDir Path dir) throws IOException {
+        Path file = Files.writeString(dir.resolve("beyond.txt"), growingLines(3 * ByteLines.BLOCK_BYTES));
+        double fromFile = ByteLines.sampleLineLength(ByteSource.of(file), Files.size(file));
+        try (ByteLines lines = ByteLines.open(file, "beyond.txt", Long.MAX_VALUE)) {
+            while (lines.next()) {
+                // the buffer now holds only the file's last block
+            }
+            assertTrue(fromFile > 10, "sampled " + fromFile);
+            assertEquals(fromFile, lines.sampledBytesPerLine());
+        }
+    }
+
+    @Test
+    void linesOfOneLengthAreSampledAtExactlyThatLength(@TempDir Path dir) throws IOException {
+        // every line 36 characters and '\n': between a stretch's first and last '\n' lie whole lines of 37 bytes
+        String line = "0123456789 0123456789 0123456789 abc\n";
+        Path file = Files.writeString(dir.resolve("even.txt"), line.repeat(20_000));
+        assertEquals(37.0, ByteLines.sampleLineLength(ByteSource.of(file), Files.size(file)));
+        try (ByteLines lines = ByteLines.open(file, "even.txt", Long.MAX_VALUE)) {
+            assertTrue(lines.next());
+            assertEquals(37.0, lines.sampledBytesPerLine());
+        }
+    }
+
+    @Test
+    void newlinesAreCountedAsOneByOneAtEveryOffsetAndNextToEveryByte() {
+        SplittableRandom rnd = new SplittableRandom(7);
+        for (int round = 0; round < 2000; round++) {
+            byte[] b = new byte[1 + rnd.nextInt(80)];
+            for (int i = 0; i < b.length; i++) {
+                // '\n' often, and every other byte value (0x0B and 0x8A among them) now and then
+                b[i] = rnd.nextInt(3) == 0 ? (byte) '\n' : (byte) rnd.nextInt(256);
+            }
+            int from = rnd.nextInt(b.length);
+            int to = from + rnd.nextInt(b.length - from + 1);
+            int expected = 0;
+            for (int i = from; i < to; i++) {
+                expected += b[i] == '\n' ? 1 : 0;
+            }
+            assertEquals(expected, ByteLines.countNewlines(b, from, to), "round " + round);
+        }
+    }
+
+    /** @return lines of about {@code bytes} bytes in all, longer and longer (10 to about 60 bytes) */
+    private static String growingLines(int bytes) {
+        StringBuilder all = new StringBuilder();
+        for (int i = 0; all.length() < bytes; i++) {
+            all.append("x".repeat(9 + (int) (50L * all.length() / bytes) + i % 3)).append('\n');
+        }
+        return all.toString();
+    }
+
+    @Test
     void newlineSearchFindsTheFirstNewlineAtEveryOffset() {
         for (int len = 0; len < 40; len++) {
             for (int at = 0; at <= len; at++) {
