@@ -4,8 +4,7 @@ import org.trajeval.core.metric.RpeUnit;
 
 /**
  * RPE from every start pose i = 0, 1, ...: pair p starts at pose p, so chunks of start
- * poses are independent. The pairs end at the first start pose without a partner. The pairs and
- * the sums are known once {@link #errorsInto} has run (one pass finds and scores the pairs).
+ * poses are independent. The pairs end at the first start pose without a partner.
  */
 final class EveryStart extends PairRule {
     private final double delta;
@@ -19,6 +18,37 @@ final class EveryStart extends PairRule {
         this.frames = unit == RpeUnit.FRAMES;
         this.par = par;
         this.m = poses.size();
+        int chunks = Parallelism.chunks(m);
+        int[] firstWithout = new int[chunks];
+        double[] chunkS = new double[chunks];
+        double[] chunkM = new double[chunks];
+        par.forEachChunk(m, (c, from, to) -> {
+            double s = 0;
+            double len = 0;
+            PathSpan path = new PathSpan(poses, from);
+            int j = frames ? from : firstPartner(from);
+            int i = from;
+            for (; i < to; i++) {
+                j = partner(i, j);
+                if (j >= m || j == i && !frames) {
+                    break;
+                }
+                s += poses.stamp(j) - poses.stamp(i);
+                len += path.between(i, j);
+            }
+            firstWithout[c] = i;
+            chunkS[c] = s;
+            chunkM[c] = len;
+        });
+        pairs = m;
+        for (int c = 0; c < chunks; c++) {
+            sumS += chunkS[c];
+            sumM += chunkM[c];
+            if (firstWithout[c] < Math.min((long) (c + 1) * Parallelism.CHUNK, m)) {
+                pairs = firstWithout[c];
+                break;
+            }
+        }
     }
 
     /** @return the partner of start pose i, given the partner j of an earlier start in the same chunk */
@@ -51,50 +81,18 @@ final class EveryStart extends PairRule {
         return lo;
     }
 
-    /**
-     * One pass per chunk of start poses: each pair's partner, its share of the sums and its errors,
-     * up to the chunk's first start pose without a partner. The pairs end at the first such pose
-     * of all; the sums add the chunks before it in chunk order. A later chunk may have computed
-     * errors past that end (only when a partner search stops at its own start pose, t_i + delta
-     * rounding to t_i): those are not counted.
-     */
     @Override
     void errorsInto(double[] trans, double[] rot) {
-        int chunks = Parallelism.chunks(m);
-        int[] firstWithout = new int[chunks];
-        double[] chunkS = new double[chunks];
-        double[] chunkM = new double[chunks];
-        par.forEachChunk(m, (c, from, to) -> {
-            AssociatedColumns.Scratch scratch = new AssociatedColumns.Scratch();
-            scratch.posesInRuns = true;
-            double s = 0;
-            double len = 0;
-            PathSpan path = new PathSpan(poses, from);
+        par.forEachChunk(pairs, (c, from, to) -> {
+            AssociatedColumns.Scratch s = new AssociatedColumns.Scratch();
+            s.posesInRuns = true;
             int j = frames ? from : firstPartner(from);
-            int i = from;
-            for (; i < to; i++) {
+            for (int i = from; i < to; i++) {
                 j = partner(i, j);
-                if (j >= m || j == i && !frames) {
-                    break;
-                }
-                s += poses.stamp(j) - poses.stamp(i);
-                len += path.between(i, j);
-                poses.rpe(i, j, scratch);
-                trans[i] = scratch.transError;
-                rot[i] = scratch.rotError;
+                poses.rpe(i, j, s);
+                trans[i] = s.transError;
+                rot[i] = s.rotError;
             }
-            firstWithout[c] = i;
-            chunkS[c] = s;
-            chunkM[c] = len;
         });
-        pairs = m;
-        for (int c = 0; c < chunks; c++) {
-            sumS += chunkS[c];
-            sumM += chunkM[c];
-            if (firstWithout[c] < Math.min((long) (c + 1) * Parallelism.CHUNK, m)) {
-                pairs = firstWithout[c];
-                break;
-            }
-        }
     }
 }

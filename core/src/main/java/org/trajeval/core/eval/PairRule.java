@@ -40,9 +40,6 @@ abstract class PairRule {
         return sumM;
     }
 
-    /**
-     * Writes the translation error (m) and rotation error (rad) of pair p to trans[p] and rot[p];
-     * {@link #pairs}, {@link #sumS} and {@link #sumM} are known once it has run.
-     */
+    /** Writes the translation error (m) and rotation error (rad) of pair p to trans[p] and rot[p]. */
     abstract void errorsInto(double[] trans, double[] rot);
 }

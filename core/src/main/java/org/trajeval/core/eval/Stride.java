@@ -2,8 +2,7 @@ package org.trajeval.core.eval;
 
 /**
  * RPE in frames between poses d apart, not overlapping: pair p is (p d, p d + d), so chunks
- * of pairs are independent (evo's default, {@code --delta 1 --delta_unit f}). The sums are
- * known once {@link #errorsInto} has run.
+ * of pairs are independent (evo's default, {@code --delta 1 --delta_unit f}).
  */
 final class Stride extends PairRule {
     private final int d;
@@ -15,17 +14,10 @@ final class Stride extends PairRule {
         this.par = par;
         int m = poses.size();
         pairs = m > d ? (m - 1) / d : 0; // the p with p d + d < m
-    }
-
-    /** Scores the pairs and, in the same pass over each chunk, sums their horizons (chunks in order). */
-    @Override
-    void errorsInto(double[] trans, double[] rot) {
         int chunks = Parallelism.chunks(pairs);
         double[] chunkS = new double[chunks];
         double[] chunkM = new double[chunks];
         par.forEachChunk(pairs, (c, from, to) -> {
-            AssociatedColumns.Scratch s = new AssociatedColumns.Scratch();
-            s.posesInRuns = d == 1;
             double sum = 0;
             double len = 0;
             PathSpan path = new PathSpan(poses, from * d);
@@ -33,9 +25,6 @@ final class Stride extends PairRule {
                 int i = p * d;
                 sum += poses.stamp(i + d) - poses.stamp(i);
                 len += path.between(i, i + d);
-                poses.rpe(i, i + d, s);
-                trans[p] = s.transError;
-                rot[p] = s.rotError;
             }
             chunkS[c] = sum;
             chunkM[c] = len;
@@ -44,5 +33,18 @@ final class Stride extends PairRule {
             sumS += chunkS[c];
             sumM += chunkM[c];
         }
+    }
+
+    @Override
+    void errorsInto(double[] trans, double[] rot) {
+        par.forEachChunk(pairs, (c, from, to) -> {
+            AssociatedColumns.Scratch s = new AssociatedColumns.Scratch();
+            s.posesInRuns = d == 1;
+            for (int p = from; p < to; p++) {
+                poses.rpe(p * d, p * d + d, s);
+                trans[p] = s.transError;
+                rot[p] = s.rotError;
+            }
+        });
     }
 }
