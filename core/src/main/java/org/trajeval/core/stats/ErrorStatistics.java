@@ -28,8 +28,8 @@ public record ErrorStatistics(double rmse, double mean, double median, double st
 
     /**
      * As {@link #of(double[], int)} but without a copy: {@code values[0..count)} may be reordered
-     * (small or not non-negative input: the median is found by quickselect in place; large
-     * non-negative input is only read). The sums are taken in index order before any reordering,
+     * (fewer than {@link BucketMedian#MIN_COUNT} values, or not non-negative input: the median is
+     * found by quickselect in place; more non-negative values are only read). The sums are taken in index order before any reordering,
      * so the result equals {@link #of(double[], int)} bit for bit.
      *
      * <p>Large non-negative input (count &gt;= {@link RadixMedian#MIN_COUNT}, the usual errors)
@@ -54,7 +54,9 @@ public record ErrorStatistics(double rmse, double mean, double median, double st
     /**
      * Sums in index order (sum, sse, min, max, then the squared deviations), and the median: by
      * radix selection on the values' bits for large non-negative input (the first histogram taken
-     * in the sums' pass), else by quickselect on {@code array} (reordered) or on a copy when null.
+     * in the sums' pass), by one bucket histogram ({@link BucketMedian}, taken in the squared
+     * deviations' pass) for a few thousand non-negative values, else by quickselect on
+     * {@code array} (reordered) or on a copy when null.
      */
     private static ErrorStatistics compute(ValueChunks values, double[] array) {
         int count = values.size();
@@ -72,14 +74,16 @@ public record ErrorStatistics(double rmse, double mean, double median, double st
         double sq;
         double median;
         if (radix != null) {
-            sq = radix.done() ? squaredDeviations(values, mean) : radix.nextPass(values, mean);
+            sq = radix.done() ? squaredDeviations(values, mean, null) : radix.nextPass(values, mean);
             while (!radix.done()) {
                 radix.nextPass(values, mean);
             }
             median = radix.median();
         } else {
-            sq = squaredDeviations(values, mean);
-            median = Selection.medianBySwapping(array != null ? array : copy(values), count);
+            BucketMedian buckets = count >= BucketMedian.MIN_COUNT ? BucketMedian.over(min, max) : null;
+            sq = squaredDeviations(values, mean, buckets);
+            median = buckets != null ? buckets.median(values)
+                    : Selection.medianBySwapping(array != null ? array : copy(values), count);
         }
         return new ErrorStatistics(Math.sqrt(sse / count), mean, median, Math.sqrt(sq / count), min, max, sse, count);
     }
@@ -113,14 +117,21 @@ public record ErrorStatistics(double rmse, double mean, double median, double st
         return sums;
     }
 
-    /** @return sum over i in index order of (values_i - mean)^2 */
-    private static double squaredDeviations(ValueChunks values, double mean) {
+    /**
+     * @param buckets when not null, counts each value for its median
+     * @return sum over i in index order of (values_i - mean)^2
+     */
+    private static double squaredDeviations(ValueChunks values, double mean, BucketMedian buckets) {
         double[] sq = {0.0};
         values.forEach((a, len) -> {
             double s = sq[0];
             for (int i = 0; i < len; i++) {
-                double d = a[i] - mean;
+                double v = a[i];
+                double d = v - mean;
                 s += d * d;
+                if (buckets != null) {
+                    buckets.count(v);
+                }
             }
             sq[0] = s;
         });
