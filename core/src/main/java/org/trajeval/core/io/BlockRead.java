@@ -3,23 +3,29 @@ package org.trajeval.core.io;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.ByteBuffer;
-import java.security.MessageDigest;
 import java.util.Arrays;
-import java.util.HexFormat;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicInteger;
 
 /**
  * One file read in blocks by several threads ({@link ReadThreads}). The file is cut into blocks
- * just after a '\n'; unit 0 hashes every byte in order (SHA-256), unit k parses block k-1 with the
- * format's own line reader ({@link NumericRows} and its batch loop, so the same values and checks)
- * into a segment of its own; segments are appended to the columns in file order, with the
+ * just after a '\n'; unit k reads block k into a buffer of its own (each byte read from the file
+ * once), hands the buffer to the file's SHA-256 in file order ({@link OrderedHash}: so the hash is
+ * of exactly the bytes parsed, even if the file is rewritten while it is read), and parses it with
+ * the format's own line reader ({@link NumericRows} and its batch loop, so the same values and
+ * checks) into a segment of its own; segments are appended to the columns in file order, with the
  * timestamp-order check across each block edge. Only a clean file is read this way: on anything
  * else (a refusal, a quote, a header not in the first block, an order problem at an edge, too many
- * poses, a size that changed while it was read) {@link #read} returns null and the caller reads the file as a whole, which then says
- * what it says today (the first bad line in file order).
+ * poses, a size that changed while it was read) {@link #read} returns null and the caller reads the
+ * file as a whole, which then says what it says today (the first bad line in file order).
  */
 final class BlockRead {
+    /**
+     * Blocks that may be read beyond the last one hashed (about 2 MiB each): bounds the bytes held (8 cost
+     * up to 100 MB more peak RSS on a 10^4 + 10^7 pair than the whole read; README, session 11, h11).
+     */
+    static final int BLOCKS_AHEAD_OF_HASH = 2;
+
     /** How a format's blocks are read. */
     interface Format {
         /** @return number of columns, the time included */
@@ -48,13 +54,14 @@ final class BlockRead {
     private final long[] starts;
     private final AtomicInteger nextUnit = new AtomicInteger();
     private final int units;
+    private final OrderedHash hash;
+    private byte[] firstBytes;
     private ByteLines firstLines;
     private NumericRows firstRows;
 
     private volatile boolean failed;
     private Throwable error;
     private int done;
-    private String sha;
     private final PoseBuffer[] segments;
     private int frontier;
     private double[][] columns;
@@ -71,8 +78,9 @@ final class BlockRead {
         this.options = options;
         this.format = format;
         this.starts = starts;
-        this.units = starts.length; // unit 0 hashes; unit k parses [starts[k-1], starts[k])
-        this.segments = new PoseBuffer[starts.length - 1];
+        this.units = starts.length - 1; // unit k reads, hashes and parses block k: [starts[k], starts[k + 1])
+        this.segments = new PoseBuffer[units];
+        this.hash = new OrderedHash(units, BLOCKS_AHEAD_OF_HASH);
         this.estimate = estimate;
     }
 
@@ -87,7 +95,7 @@ final class BlockRead {
         long[] starts;
         try {
             size = file.size();
-            if (!threads.inBlocks(size)) {
+            if (!threads.inBlocks(size) || size > options.maxBytes()) {
                 return null;
             }
             starts = cut(file, size, threads.blockBytes());
@@ -97,9 +105,14 @@ final class BlockRead {
         if (starts.length < 3) {
             return null;
         }
+        for (int k = 1; k < starts.length; k++) {
+            if (starts[k] - starts[k - 1] > ByteLines.MAX_LINE_BYTES) {
+                return null; // a line the whole read may refuse as too long
+            }
+        }
         double perLine = size > ByteLines.SAMPLES * ByteLines.SAMPLE_BYTES
                 ? ByteLines.sampleLineLength(file, size) : Double.NaN;
-        long estimate = perLine > 0 ? (long) (size / perLine * 1.02) + 64 : 1024;
+        long estimate = capacityFor(perLine > 0 ? (long) (size / perLine * 1.02) + 64 : 1024, options);
         BlockRead r = new BlockRead(file, source, options, format, starts, estimate);
         return r.run(threads);
     }
@@ -133,16 +146,24 @@ final class BlockRead {
         return Arrays.copyOf(starts, k);
     }
 
+    /**
+     * @param estimate poses expected in the file (from its size and sampled line length)
+     * @return the poses to make room for at first: the estimate, but never more than the pose limit
+     *     (a file of mostly blank lines would otherwise get room for a pose per line)
+     */
+    static long capacityFor(long estimate, ReadOptions options) {
+        return Math.min(estimate, options.maxPoses());
+    }
+
     private LoadedTrajectory run(ReadThreads threads) {
         try {
-            firstLines = ByteLines.range(file, source, 0, starts[1], null);
+            firstBytes = readBlock(0);
+            firstLines = ByteLines.inMemory(firstBytes, blockLength(0), source, true);
             firstRows = format.first(firstLines);
-        } catch (RuntimeException e) {
-            close(firstLines);
+        } catch (IOException | RuntimeException e) {
             return null;
         }
         if (firstRows == null) {
-            close(firstLines);
             return null;
         }
         threads.start(this);
@@ -167,11 +188,11 @@ final class BlockRead {
                 Thread.currentThread().interrupt();
             }
         }
-        close(firstLines); // if its unit was skipped after a failure
         if (error instanceof Error e) {
             throw e;
         }
-        if (failed || n == 0) {
+        String sha = hash.digest();
+        if (failed || n == 0 || sha == null) {
             return null;
         }
         double[][] c = columns;
@@ -190,15 +211,8 @@ final class BlockRead {
             return false;
         }
         try {
-            if (!failed) {
-                if (u == 0) {
-                    String h = hash();
-                    synchronized (this) {
-                        sha = h;
-                    }
-                } else {
-                    parse(u - 1);
-                }
+            if (!failed && hash.awaitTurn(u)) {
+                parse(u);
             }
         } catch (Throwable t) {
             synchronized (this) {
@@ -207,6 +221,7 @@ final class BlockRead {
                     error = t;
                 }
             }
+            hash.abandon();
         } finally {
             synchronized (this) {
                 done++;
@@ -216,30 +231,19 @@ final class BlockRead {
         return true;
     }
 
-    private String hash() throws IOException {
-        MessageDigest md = ByteLines.sha256();
-        byte[] b = new byte[ByteLines.BLOCK_BYTES];
-        long total = 0;
-        try (InputStream in = file.open()) {
-            for (int m; (m = in.read(b)) >= 0; ) {
-                md.update(b, 0, m);
-                total += m;
-                if (total > options.maxBytes()) {
-                    throw FileProblems.tooManyBytes(source, total, options.maxBytes());
-                }
+    /** Reads, hashes (in file order) and parses block {@code block}. */
+    private void parse(int block) throws IOException {
+        byte[] bytes = block == 0 ? firstBytes : readBlock(block);
+        int length = blockLength(block);
+        AtomicInteger users = new AtomicInteger(2); // the hash and the parse
+        Runnable release = () -> {
+            if (users.decrementAndGet() == 0) {
+                spareBuffers.add(bytes);
             }
-        }
-        if (total != starts[starts.length - 1]) { // it grew or shrank: the blocks hold other bytes
-            throw new IOException(source + " changed while it was read (" + total + " bytes, not "
-                    + starts[starts.length - 1] + ")");
-        }
-        return HexFormat.of().formatHex(md.digest());
-    }
-
-    private void parse(int block) {
-        ByteLines lines = block == 0 ? firstLines
-                : ByteLines.range(file, source, starts[block], starts[block + 1], spareBuffers.poll());
+        };
+        hash.offer(block, bytes, length, release);
         try {
+            ByteLines lines = block == 0 ? firstLines : ByteLines.inMemory(bytes, length, source, false);
             NumericRows rows = block == 0 ? firstRows : format.later(lines);
             PoseBuffer poses = format.segment();
             double[][] spare = spareColumns.poll();
@@ -252,14 +256,42 @@ final class BlockRead {
             while (format.readBatch(rows, poses, in, row)) {
                 // batches, as the whole-file readers
             }
-            if (!lines.rangeRead()) { // the file shrank after it was cut (and perhaps hashed)
-                throw new IllegalStateException(source + " ended before byte " + starts[block + 1]);
-            }
             append(block, poses);
         } finally {
-            lines.close();
+            release.run();
         }
-        spareBuffers.add(lines.buffer());
+    }
+
+    private int blockLength(int block) {
+        return (int) (starts[block + 1] - starts[block]);
+    }
+
+    /**
+     * @return the bytes of block {@code block} from the file, followed by {@link ByteLines#READ_AHEAD}
+     *     bytes or more, in a spare buffer when one is big enough
+     * @throws IOException also when the file ended before the block's end or goes on past the last
+     *     block's (it changed size after it was cut)
+     */
+    private byte[] readBlock(int block) throws IOException {
+        int length = blockLength(block);
+        byte[] b = spareBuffers.poll();
+        if (b == null || b.length < length + ByteLines.READ_AHEAD) {
+            b = new byte[length + (length >> 4) + ByteLines.READ_AHEAD]; // room for a slightly longer next block
+        }
+        try (InputStream in = file.open(starts[block])) {
+            for (int at = 0, m; at < length; at += m) {
+                // reads of at most the whole read's size: the JDK's per-thread direct buffer for file reads
+                // then fits every read, instead of being freed and allocated anew for each longer block
+                m = in.read(b, at, Math.min(ByteLines.BLOCK_BYTES, length - at));
+                if (m < 0) {
+                    throw new IOException(source + " ended before byte " + starts[block + 1] + " (it shrank while read)");
+                }
+            }
+            if (block == units - 1 && in.read() >= 0) {
+                throw new IOException(source + " goes on past byte " + starts[units] + " (it grew while read)");
+            }
+        }
+        return b;
     }
 
     /** Keeps a parsed segment, and appends every segment whose predecessors are all appended. */
@@ -281,7 +313,8 @@ final class BlockRead {
             if (columns == null) {
                 columns = new double[format.columns()][(int) Math.min(Math.max(estimate, m), Integer.MAX_VALUE - 8)];
             } else if (n + m > columns[0].length) {
-                int grown = (int) Math.min(Math.max((long) n + m, n + (n >> 3) + 64L), Integer.MAX_VALUE - 8);
+                long wanted = capacityFor(Math.max((long) n + m, n + (n >> 3) + 64L), options);
+                int grown = (int) Math.min(wanted, Integer.MAX_VALUE - 8);
                 for (int c = 0; c < columns.length; c++) {
                     columns[c] = Arrays.copyOf(columns[c], grown);
                 }
@@ -292,12 +325,6 @@ final class BlockRead {
             n += m;
             lastT = s.get(0, m - 1);
             spareColumns.add(s.columns());
-        }
-    }
-
-    private static void close(ByteLines lines) {
-        if (lines != null) {
-            lines.close();
         }
     }
 }

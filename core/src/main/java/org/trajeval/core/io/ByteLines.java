@@ -31,7 +31,7 @@ final class ByteLines implements Closeable {
     private final InputStream in;
     private final MessageDigest sha;
     private final long maxBytes;
-    private byte[] buf = new byte[BLOCK_BYTES + READ_AHEAD];
+    private byte[] buf;
     private int pos;
     private int limit;
     private int scanFrom;
@@ -47,42 +47,49 @@ final class ByteLines implements Closeable {
     private int end;
 
     private final long expectedBytes;
-    /** Bytes still to read from {@link #in} (a block of a file stops here; a whole file at its end). */
-    private long unread;
 
     private ByteLines(String source, InputStream in, long maxBytes, long expectedBytes) {
-        this(source, in, maxBytes, expectedBytes, sha256(), Long.MAX_VALUE, false);
+        this(source, in, maxBytes, expectedBytes, sha256(), new byte[BLOCK_BYTES + READ_AHEAD]);
     }
 
     private ByteLines(String source, InputStream in, long maxBytes, long expectedBytes, MessageDigest sha,
-            long unread, boolean started) {
+            byte[] buf) {
         this.source = source;
         this.in = in;
         this.maxBytes = maxBytes;
         this.expectedBytes = expectedBytes;
         this.sha = sha;
-        this.unread = unread;
-        this.started = started;
+        this.buf = buf;
     }
 
     /**
-     * Opens the bytes {@code [from, to)} of a file, a block cut at line boundaries
-     * ({@link BlockRead}): not hashed, and a byte-order mark is skipped only at the file's start.
+     * The lines of a block of a file already read, {@code buf[0, length)}, cut just after a '\n'
+     * ({@link BlockRead}, which reads and hashes the bytes itself): nothing more is read, and a
+     * byte-order mark is skipped only at the file's start.
      *
-     * @param spare a buffer to read into instead of a new one (from {@link #buffer()} of a finished
-     *     range), or null
+     * @param buf the block's bytes, then at least {@link #READ_AHEAD} more (any values)
+     * @param fileStart true for the block at byte 0 of the file
      */
-    static ByteLines range(ByteSource file, String source, long from, long to, byte[] spare) {
-        try {
-            ByteLines lines = new ByteLines(source, file.open(from), Long.MAX_VALUE, to - from, null, to - from,
-                    from > 0);
-            if (spare != null && spare.length == lines.buf.length) {
-                lines.buf = spare; // a buffer of an earlier block, whose lines are all read
-            }
-            return lines;
-        } catch (IOException | SecurityException e) {
-            throw FileProblems.unreadable(source, e);
+    static ByteLines inMemory(byte[] buf, int length, String source, boolean fileStart) {
+        if (buf.length - length < READ_AHEAD) {
+            throw new IllegalArgumentException("a block needs " + READ_AHEAD + " bytes after it");
         }
+        ByteLines lines = new ByteLines(source, InputStream.nullInputStream(), Long.MAX_VALUE, length, null, buf);
+        lines.limit = length;
+        lines.bytesRead = length;
+        lines.eof = true;
+        lines.started = true;
+        for (int i = length - 1; i >= 0; i--) {
+            if (buf[i] == '\n') {
+                lines.complete = i + 1;
+                break;
+            }
+        }
+        if (fileStart && length >= 3 && (buf[0] & 0xff) == 0xEF && (buf[1] & 0xff) == 0xBB && (buf[2] & 0xff) == 0xBF) {
+            lines.pos = 3;
+            lines.scanFrom = 3;
+        }
+        return lines;
     }
 
     /** Opens a file; refuses a missing or unreadable one as {@link InputProblem#UNREADABLE}. */
@@ -334,7 +341,7 @@ final class ByteLines implements Closeable {
         }
         int n;
         try {
-            n = unread == 0 ? -1 : in.read(buf, limit, (int) Math.min(capacity - limit, unread));
+            n = in.read(buf, limit, capacity - limit);
         } catch (IOException e) {
             throw FileProblems.unreadable(source, e);
         }
@@ -342,7 +349,6 @@ final class ByteLines implements Closeable {
             eof = true;
             return;
         }
-        unread -= n;
         if (sha != null) {
             sha.update(buf, limit, n);
         }
@@ -387,11 +393,6 @@ final class ByteLines implements Closeable {
     }
 
     /** @return the file size when it was opened (bytes), 0 if unknown */
-    /** @return for a range ({@link #range}): true once every byte of it was read, false while (or if the file ended before) */
-    boolean rangeRead() {
-        return unread == 0;
-    }
-
     long expectedBytes() {
         return expectedBytes;
     }

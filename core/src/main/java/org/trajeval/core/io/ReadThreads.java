@@ -37,9 +37,9 @@ public final class ReadThreads {
     /**
      * The threads for reading a pair at once, one file per thread: blocks only where a thread would
      * otherwise idle, that is with more threads than files or one file at least twice the size of
-     * the other (an equal 10^7 planar pair on two threads measured 3-5 % slower in blocks: both
-     * threads are busy anyway, and blocks cost a second pass over the bytes for the hash and a copy
-     * of each segment).
+     * the other (an equal 10^7 pair on two threads, planar or 3D, is no faster in blocks, even with
+     * each byte read once since session 11: both threads are busy anyway, and blocks cost a copy of
+     * each segment into the columns and more CPU; README, session 11, h11).
      *
      * @param threads threads in all, the calling one included
      * @return {@link #ONE} when blocks would not pay, or a file's size cannot be told

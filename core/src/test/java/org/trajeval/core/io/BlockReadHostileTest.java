@@ -13,13 +13,11 @@ import java.nio.ByteBuffer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.SplittableRandom;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
-import java.util.concurrent.atomic.AtomicBoolean;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -33,8 +31,8 @@ import org.trajeval.core.traj.Trajectory;
  * Hostile files for the block read ({@link BlockRead}): seeded random damage at random places
  * (CR, NUL, multi-byte UTF-8, byte-order marks, quotes, non-finite numbers, repeated and
  * decreasing stamps, over-long lines, missing or extra fields) with small random block sizes, a
- * file that grows or shrinks while it is read, a block that cannot be opened, an interrupted
- * reader: the outcome is always the whole-file read's (values bit for bit, hash, refusal).
+ * block that cannot be opened, an interrupted reader: the outcome is always the whole-file read's
+ * (values bit for bit, hash, refusal). A file that changes while it is read: {@link BlockReadChangingFileTest}.
  */
 class BlockReadHostileTest {
     private static ExecutorService pool;
@@ -172,62 +170,6 @@ class BlockReadHostileTest {
     }
 
     @Test
-    void fileGrowingWhileReadGivesHashAndValuesOfTheSameBytes() throws IOException {
-        String text = BlockReadTest.tum(new SplittableRandom(14), 200, false);
-        StringBuilder more = new StringBuilder();
-        for (int i = 0; i < 30; i++) {
-            more.append(1.4e9 + i).append(" 1 2 3 0 0 0 1\n");
-        }
-        Path f = Files.writeString(dir.resolve("grow.tum"), text);
-        AtomicBoolean grown = new AtomicBoolean();
-        ByteSource growing = new Changing(f, () -> {
-            if (grown.compareAndSet(false, true)) {
-                Files.writeString(f, more, StandardOpenOption.APPEND);
-            }
-        });
-        LoadedTrajectory blocks = tumInBlocks(growing, f, threads(500));
-        assertTrue(grown.get());
-        assertConsistent(blocks, f, text);
-    }
-
-    @Test
-    void fileShrinkingWhileReadGivesHashAndValuesOfTheSameBytes() throws IOException {
-        String text = BlockReadTest.tum(new SplittableRandom(16), 200, false);
-        Path f = Files.writeString(dir.resolve("shrink.tum"), text);
-        int cut = text.indexOf('\n', text.length() / 2) + 1;
-        AtomicBoolean shrunk = new AtomicBoolean();
-        ByteSource shrinking = new Changing(f, () -> {
-            if (shrunk.compareAndSet(false, true)) {
-                Files.writeString(f, text.substring(0, cut));
-            }
-        });
-        LoadedTrajectory blocks = tumInBlocks(shrinking, f, threads(500));
-        assertTrue(shrunk.get());
-        assertConsistent(blocks, f, text);
-    }
-
-    @Test
-    void fileShrinkingAfterItWasHashedGivesHashAndValuesOfTheSameBytes() throws IOException {
-        String text = BlockReadTest.tum(new SplittableRandom(19), 200, false);
-        Path f = Files.writeString(dir.resolve("shrinklate.tum"), text);
-        int cut = text.indexOf('\n', text.length() / 3) + 1;
-        AtomicBoolean shrunk = new AtomicBoolean();
-        ByteSource hashedThenShrunk = new Changing(f, () -> { }) {
-            @Override
-            public InputStream open() throws IOException {
-                byte[] all = Files.readAllBytes(f); // the hash reads the file as it was
-                if (shrunk.compareAndSet(false, true)) {
-                    Files.writeString(f, text.substring(0, cut));
-                }
-                return new java.io.ByteArrayInputStream(all);
-            }
-        };
-        LoadedTrajectory blocks = tumInBlocks(hashedThenShrunk, f, threads(300));
-        assertTrue(shrunk.get());
-        assertConsistent(blocks, f, text);
-    }
-
-    @Test
     void blockThatCannotBeOpenedFallsBackWithoutHangingAndThePoolStaysUsable() throws IOException {
         Path f = Files.writeString(dir.resolve("fail.tum"), BlockReadTest.tum(new SplittableRandom(17), 300, false));
         ByteSource failing = new ByteSource() {
@@ -296,67 +238,8 @@ class BlockReadHostileTest {
                 outcome(() -> TrajectoryReader.read(f, ReadOptions.defaults(), rejected)));
     }
 
-    /** A file that changes (grows, shrinks) just after the block read took its size. */
-    private static class Changing implements ByteSource {
-        private final Path f;
-        private final Change change;
-
-        Changing(Path f, Change change) {
-            this.f = f;
-            this.change = change;
-        }
-
-        @Override
-        public InputStream open() throws IOException {
-            return Files.newInputStream(f);
-        }
-
-        @Override
-        public InputStream open(long from) throws IOException {
-            return ByteSource.of(f).open(from);
-        }
-
-        @Override
-        public long size() throws IOException {
-            long size = Files.size(f);
-            change.run();
-            return size;
-        }
-
-        @Override
-        public String fileName() {
-            return f.getFileName().toString();
-        }
-
-        @Override
-        public int readAt(long position, ByteBuffer dst) throws IOException {
-            return ByteSource.of(f).readAt(position, dst);
-        }
-    }
-
-    private interface Change {
-        void run() throws IOException;
-    }
-
-    /**
-     * Asserts a block read of a changing file either gave up (null: the caller reads it whole) or
-     * gave the values and hash of one same set of bytes: the file now, or as it was.
-     */
-    private void assertConsistent(LoadedTrajectory blocks, Path f, String before) throws IOException {
-        if (blocks == null) {
-            return;
-        }
-        Path then = Files.writeString(dir.resolve("then.tum"), before);
-        LoadedTrajectory now = TrajectoryReader.read(f, ReadOptions.defaults());
-        LoadedTrajectory old = TrajectoryReader.read(then, ReadOptions.defaults());
-        LoadedTrajectory same = blocks.sha256().equals(now.sha256()) ? now : old;
-        assertEquals(same.sha256(), blocks.sha256(), "the hash is of neither the file now nor as it was");
-        assertEquals(describe(same.trajectory()), describe(blocks.trajectory()),
-                "the values are not those of the bytes hashed");
-    }
-
     /** A TUM file read in blocks from {@code source}, with the default options. */
-    private static LoadedTrajectory tumInBlocks(ByteSource source, Path f, ReadThreads threads) {
+    static LoadedTrajectory tumInBlocks(ByteSource source, Path f, ReadThreads threads) {
         return BlockRead.read(source, f.toString(), ReadOptions.defaults(),
                 new TumReader.Blocks(f.toString(), ReadOptions.defaults(), ""), threads);
     }
@@ -410,7 +293,8 @@ class BlockReadHostileTest {
         return t.sha256() + " " + t.format() + " " + t.formatReason() + "\n" + describe(t.trajectory());
     }
 
-    private static String describe(Trajectory t) {
+    /** @return every value's bits, pose by pose, as text */
+    static String describe(Trajectory t) {
         StringBuilder sb = new StringBuilder();
         for (int i = 0; i < t.size(); i++) {
             double[] v;

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
+import java.lang.management.ManagementFactory;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -183,6 +184,24 @@ class BlockReadTest {
         assertTrue(!ReadThreads.forPair(pool, 2, big, small).readSecondHere());
         assertTrue(!ReadThreads.forPair(pool, 2, big, big).readSecondHere());
         assertTrue(!ReadThreads.ONE.readSecondHere());
+    }
+
+    @Test
+    void columnsOfAFileOfMostlyBlankLinesAreSizedByThePoseLimitNotByItsLineCount() throws IOException {
+        // 40 poses, then 2^21 blank lines: the sampled line length (about 1 byte) promises about 2.1
+        // million poses, 134 MB of TUM columns (8 doubles a pose); the pose limit allows 100 (6.4 kB)
+        Path f = write("blank.tum", tum(new SplittableRandom(8), 40, false) + "\n".repeat(1 << 21));
+        ReadOptions limited = ReadOptions.defaults().withLimits(Long.MAX_VALUE, 100);
+        LoadedTrajectory whole = TrajectoryReader.read(f, limited);
+        com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        ReadThreads here = new ReadThreads(Runnable::run, 2, 1 << 16); // the helpers run in place: every block here
+        long before = mx.getCurrentThreadAllocatedBytes();
+        LoadedTrajectory blocks = BlockRead.read(ByteSource.of(f), f.toString(), limited,
+                new TumReader.Blocks(f.toString(), limited, whole.formatReason()), here);
+        long allocated = mx.getCurrentThreadAllocatedBytes() - before;
+        assertNotNull(blocks, "fell back to the whole-file read");
+        assertSame(whole, blocks);
+        assertTrue(allocated < 16 << 20, allocated + " bytes allocated"); // 32 blocks of 64 kB, columns of 100 poses
     }
 
     private static ReadThreads threads(int block) {
