@@ -213,6 +213,10 @@ final class BlockRead {
         try {
             if (!failed && hash.awaitTurn(u)) {
                 parse(u);
+            } else {
+                // this block is never handed to the hash: a reader waiting for the hash to pass it
+                // (one that claimed a later block before the read failed) must not wait for ever
+                hash.abandon();
             }
         } catch (Throwable t) {
             synchronized (this) {
@@ -308,6 +312,7 @@ final class BlockRead {
             double t0 = s.get(0, 0);
             if (n > 0 && !(t0 > lastT) && !(keep && t0 == lastT) || n + (long) m > options.maxPoses()) {
                 failed = true; // the whole-file read names the line
+                hash.abandon(); // wakes readers waiting for the hash (lock order: this, then the hash)
                 return;
             }
             if (columns == null) {

@@ -29,8 +29,9 @@ public record ErrorStatistics(double rmse, double mean, double median, double st
     /**
      * As {@link #of(double[], int)} but without a copy: {@code values[0..count)} may be reordered
      * (fewer than {@link BucketMedian#MIN_COUNT} values, or not non-negative input: the median is
-     * found by quickselect in place; more non-negative values are only read). The sums are taken in index order before any reordering,
-     * so the result equals {@link #of(double[], int)} bit for bit.
+     * found by quickselect in place; more non-negative values are only read). The sums are taken
+     * in index order before any reordering, so the result equals {@link #of(double[], int)} bit
+     * for bit.
      *
      * <p>Large non-negative input (count &gt;= {@link RadixMedian#MIN_COUNT}, the usual errors)
      * is read twice: the first pass sums and histograms the values' top bits, the second sums the
@@ -44,8 +45,10 @@ public record ErrorStatistics(double rmse, double mean, double median, double st
     /**
      * The statistics of values read chunk by chunk, e.g. errors computed afresh at each reading
      * instead of stored: the same numbers, bit for bit, as {@link #of(double[], int)} on the
-     * values in index order. Large non-negative input is read twice (rarely more, see
-     * {@link RadixMedian}); anything else is copied into an array once, for its median.
+     * values in index order. Large non-negative input (at least {@link RadixMedian#MIN_COUNT}
+     * values) is read twice (rarely more, see {@link RadixMedian}); from {@link BucketMedian#MIN_COUNT}
+     * values up it is read three times (sums, squared deviations with the bucket counts, and a copy
+     * of the median's buckets only); anything else is copied into an array once, for its median.
      */
     public static ErrorStatistics of(ValueChunks values) {
         return compute(values, null);

@@ -85,6 +85,10 @@ class OrderedHashTest {
         AtomicInteger result = new AtomicInteger(-1);
         Thread reader = new Thread(() -> result.set(hash.awaitTurn(2) ? 1 : 0));
         reader.start();
+        for (int k = 0; k < 10_000 && reader.getState() != Thread.State.WAITING; k++) {
+            Thread.sleep(1); // abandoned only once the reader waits, so the test needs abandon's wake-up
+        }
+        assertEquals(Thread.State.WAITING, reader.getState(), "block 2 waits for blocks 0 and 1");
         hash.abandon();
         reader.join(10_000);
         assertFalse(reader.isAlive());

@@ -76,6 +76,21 @@ class BucketMedianTest {
     }
 
     @Test
+    void theHistogramAloneGivesTheSortedMiddleAtBothEndsOfItsRange() {
+        // BucketMedian itself, not through ErrorStatistics (whose quickselect fallback gives the same bits)
+        Random rnd = new Random(206);
+        for (int n : new int[] {BucketMedian.MIN_COUNT, BucketMedian.MIN_COUNT + 1, RadixMedian.MIN_COUNT - 1}) {
+            double[] a = values(n, i -> Math.abs(rnd.nextGaussian()) * 0.05);
+            BucketMedian histogram = BucketMedian.over(Arrays.stream(a).min().getAsDouble(),
+                    Arrays.stream(a).max().getAsDouble());
+            for (double v : a) {
+                histogram.count(v);
+            }
+            assertBitsEqual(sortedMiddle(a), histogram.median(ValueChunks.of(a, n)), "histogram alone, n " + n);
+        }
+    }
+
+    @Test
     void chunkedValuesGiveTheSameMedianAsOneArray() {
         Random rnd = new Random(204);
         double[] a = values(10_000, i -> Math.abs(rnd.nextGaussian()) * 0.1);
