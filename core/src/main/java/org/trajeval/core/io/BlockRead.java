@@ -176,17 +176,7 @@ final class BlockRead {
         }
         threads.helpWhileWork(); // then any other file's, while this one's last blocks finish
         synchronized (this) {
-            boolean interrupted = false;
-            while (done < units) {
-                try {
-                    wait();
-                } catch (InterruptedException e) {
-                    interrupted = true;
-                }
-            }
-            if (interrupted) {
-                Thread.currentThread().interrupt();
-            }
+            KeptInterrupt.await(this, () -> done >= units);
         }
         if (error instanceof Error e) {
             throw e;

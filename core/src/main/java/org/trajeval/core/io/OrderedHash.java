@@ -39,17 +39,7 @@ final class OrderedHash {
      * @return false if the hash was abandoned (the read failed elsewhere)
      */
     synchronized boolean awaitTurn(int block) {
-        boolean interrupted = false;
-        while (block >= hashed + window && !abandoned) {
-            try {
-                wait();
-            } catch (InterruptedException e) {
-                interrupted = true;
-            }
-        }
-        if (interrupted) {
-            Thread.currentThread().interrupt();
-        }
+        KeptInterrupt.await(this, () -> block < hashed + window || abandoned);
         return !abandoned;
     }
 

@@ -8,7 +8,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.io.InputStream;
-import java.nio.ByteBuffer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -17,12 +16,8 @@ import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
 import java.util.HexFormat;
 import java.util.SplittableRandom;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.trajeval.core.traj.SpatialTrajectory;
@@ -32,21 +27,10 @@ import org.trajeval.core.traj.SpatialTrajectory;
  * rewritten in place at the same size. The block read either gives up (the caller reads the file
  * as a whole) or reports the SHA-256 of exactly the bytes whose values it returns.
  */
-class BlockReadChangingFileTest {
-    private static ExecutorService pool;
+class BlockReadChangingFileTest extends ReadPoolFixture {
 
     @TempDir
     Path dir;
-
-    @BeforeAll
-    static void startPool() {
-        pool = Executors.newFixedThreadPool(2);
-    }
-
-    @AfterAll
-    static void stopPool() {
-        pool.shutdownNow();
-    }
 
     @Test
     void fileGrowingWhileReadFallsBackToTheWholeRead() throws IOException {
@@ -202,45 +186,20 @@ class BlockReadChangingFileTest {
         }
     }
 
-    private static ReadThreads threads(int block) {
-        return new ReadThreads(pool, 3, block);
-    }
-
     /** A file that changes (grows, shrinks) just after the block read took its size. */
-    private static class Changing implements ByteSource {
-        private final Path f;
+    private static class Changing extends FileSourceDouble {
         private final Change change;
 
         Changing(Path f, Change change) {
-            this.f = f;
+            super(f);
             this.change = change;
         }
 
         @Override
-        public InputStream open() throws IOException {
-            return Files.newInputStream(f);
-        }
-
-        @Override
-        public InputStream open(long from) throws IOException {
-            return ByteSource.of(f).open(from);
-        }
-
-        @Override
         public long size() throws IOException {
-            long size = Files.size(f);
+            long size = super.size();
             change.run();
             return size;
-        }
-
-        @Override
-        public String fileName() {
-            return f.getFileName().toString();
-        }
-
-        @Override
-        public int readAt(long position, ByteBuffer dst) throws IOException {
-            return ByteSource.of(f).readAt(position, dst);
         }
     }
 

@@ -9,7 +9,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
-import java.nio.ByteBuffer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -18,8 +17,6 @@ import java.util.List;
 import java.util.SplittableRandom;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.trajeval.core.InputException;
@@ -34,21 +31,10 @@ import org.trajeval.core.traj.Trajectory;
  * block that cannot be opened, an interrupted reader: the outcome is always the whole-file read's
  * (values bit for bit, hash, refusal). A file that changes while it is read: {@link BlockReadChangingFileTest}.
  */
-class BlockReadHostileTest {
-    private static ExecutorService pool;
+class BlockReadHostileTest extends ReadPoolFixture {
 
     @TempDir
     Path dir;
-
-    @BeforeAll
-    static void startPool() {
-        pool = Executors.newFixedThreadPool(2);
-    }
-
-    @AfterAll
-    static void stopPool() {
-        pool.shutdownNow();
-    }
 
     @Test
     void randomlyDamagedTumAndCsvFilesGiveTheWholeFileReadsOutcomeAtRandomBlockSizes() throws IOException {
@@ -172,33 +158,13 @@ class BlockReadHostileTest {
     @Test
     void blockThatCannotBeOpenedFallsBackWithoutHangingAndThePoolStaysUsable() throws IOException {
         Path f = Files.writeString(dir.resolve("fail.tum"), BlockReadTest.tum(new SplittableRandom(17), 300, false));
-        ByteSource failing = new ByteSource() {
-            @Override
-            public InputStream open() throws IOException {
-                return Files.newInputStream(f);
-            }
-
+        ByteSource failing = new FileSourceDouble(f) {
             @Override
             public InputStream open(long from) throws IOException {
                 if (from > 0 && from < 4000) {
                     throw new IOException("injected failure at " + from);
                 }
-                return ByteSource.of(f).open(from);
-            }
-
-            @Override
-            public long size() throws IOException {
-                return Files.size(f);
-            }
-
-            @Override
-            public String fileName() {
-                return f.getFileName().toString();
-            }
-
-            @Override
-            public int readAt(long position, ByteBuffer dst) throws IOException {
-                return ByteSource.of(f).readAt(position, dst);
+                return super.open(from);
             }
         };
         ReadThreads threads = threads(300);
@@ -242,10 +208,6 @@ class BlockReadHostileTest {
     static LoadedTrajectory tumInBlocks(ByteSource source, Path f, ReadThreads threads) {
         return BlockRead.read(source, f.toString(), ReadOptions.defaults(),
                 new TumReader.Blocks(f.toString(), ReadOptions.defaults(), ""), threads);
-    }
-
-    private static ReadThreads threads(int block) {
-        return new ReadThreads(pool, 3, block);
     }
 
     private static BlockRead.Format format(Path f, ReadOptions o) {

@@ -14,11 +14,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.SplittableRandom;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
 import java.util.function.Function;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.trajeval.core.InputException;
@@ -33,22 +29,11 @@ import org.trajeval.core.traj.Trajectory;
  * line without newline) and every refusal falls at a block edge for some block size, the same
  * values bit for bit, the same SHA-256, and the same refusal (file, line, column, problem, message).
  */
-class BlockReadTest {
+class BlockReadTest extends ReadPoolFixture {
     private static final int[] BLOCK_SIZES = {1, 7, 29, 64, 97, 150, 333, 1000};
-    private static ExecutorService pool;
 
     @TempDir
     Path dir;
-
-    @BeforeAll
-    static void startPool() {
-        pool = Executors.newFixedThreadPool(2);
-    }
-
-    @AfterAll
-    static void stopPool() {
-        pool.shutdownNow();
-    }
 
     @Test
     void cleanTumFileGivesTheWholeFileReadsBitsAndHashAtEveryBlockSize() throws IOException {
@@ -202,10 +187,6 @@ class BlockReadTest {
         assertNotNull(blocks, "fell back to the whole-file read");
         assertSame(whole, blocks);
         assertTrue(allocated < 16 << 20, allocated + " bytes allocated"); // 32 blocks of 64 kB, columns of 100 poses
-    }
-
-    private static ReadThreads threads(int block) {
-        return new ReadThreads(pool, 3, block);
     }
 
     /** Asserts the block read succeeds (not the whole-file fallback) and equals the whole-file read. */

@@ -1,12 +1,14 @@
 package org.trajeval.core.stats;
 
-import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.trajeval.core.stats.MedianCases.assertBitsEqual;
+import static org.trajeval.core.stats.MedianCases.shuffle;
+import static org.trajeval.core.stats.MedianCases.sortedMiddle;
+import static org.trajeval.core.stats.MedianCases.values;
 
 import java.util.Arrays;
 import java.util.Random;
-import java.util.function.IntToDoubleFunction;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -122,34 +124,5 @@ class BucketMedianTest {
 
     private static void assertMedianIsSortedMiddle(double[] a, String what) {
         assertBitsEqual(sortedMiddle(a), ErrorStatistics.ofInPlace(a.clone(), a.length).median(), what);
-    }
-
-    private static double sortedMiddle(double[] a) {
-        double[] sorted = a.clone();
-        Arrays.sort(sorted);
-        int n = sorted.length;
-        return n % 2 == 1 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
-    }
-
-    private static void assertBitsEqual(double expected, double actual, String what) {
-        assertEquals(Double.doubleToRawLongBits(expected), Double.doubleToRawLongBits(actual),
-                what + ": expected " + expected + ", got " + actual);
-    }
-
-    private static double[] values(int n, IntToDoubleFunction value) {
-        double[] a = new double[n];
-        for (int i = 0; i < n; i++) {
-            a[i] = value.applyAsDouble(i);
-        }
-        return a;
-    }
-
-    private static void shuffle(double[] a, Random rnd) {
-        for (int i = a.length - 1; i > 0; i--) {
-            int j = rnd.nextInt(i + 1);
-            double t = a[i];
-            a[i] = a[j];
-            a[j] = t;
-        }
     }
 }
