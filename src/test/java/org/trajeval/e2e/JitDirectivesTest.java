@@ -8,6 +8,9 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
@@ -16,11 +19,11 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * The compiler directives the installed trajeval-pipeline launcher passes (gradle/jit-directives.json,
- * shipped as lib/jit-directives.json; docs/readme/startup.md): the launcher hands the JVM the shipped
- * file, which is the source tree's, a JVM accepts it (a bad or missing file would stop the JVM at
- * start), the JVM's note about it goes to stderr, not into stdout, and TRAJEVAL_JIT_DIRECTIVES=off
- * leaves it out.
+ * The compiler directives the installed launchers pass (gradle/jit-directives.json, shipped as
+ * lib/jit-directives.json; docs/readme/startup.md): trajeval-pipeline always and trajeval for
+ * {@code eval --batch} hand the JVM the shipped file, which is the source tree's; a JVM accepts it (a
+ * bad or missing file would stop the JVM at start); the JVM's note about it goes to stderr, not into
+ * stdout; a single eval runs without it; TRAJEVAL_JIT_DIRECTIVES=off leaves it out.
  */
 class JitDirectivesTest {
     private static final Pattern FLAG = Pattern.compile("\\bCompilerDirectivesFile\\s+=\\s+(\\S*)");
@@ -45,6 +48,8 @@ class JitDirectivesTest {
         ProcessBuilder pb = new ProcessBuilder(cmd).redirectOutput(out.toFile()).redirectError(err.toFile());
         pb.environment().remove("JAVA_OPTS");
         pb.environment().remove("TRAJEVAL_PIPELINE_OPTS");
+        pb.environment().remove("TRAJEVAL_OPTS");
+        pb.environment().remove("TRAJEVAL_C1_MAX_BYTES");
         pb.environment().remove("TRAJEVAL_JIT_DIRECTIVES");
         pb.environment().putAll(env);
         Process p = pb.start();
@@ -66,7 +71,35 @@ class JitDirectivesTest {
     }
 
     private static Path shipped() {
-        return installed("trajeval.pipelineLauncher").getParent().resolveSibling("lib").resolve("jit-directives.json");
+        return shipped("trajeval.pipelineLauncher");
+    }
+
+    private static Path shipped(String launcherProperty) {
+        return installed(launcherProperty).getParent().resolveSibling("lib").resolve("jit-directives.json");
+    }
+
+    /** trajeval eval ARGS with the JVM's final flags printed. */
+    private Result cliEval(String... args) throws Exception {
+        List<String> cmd = new ArrayList<>(List.of(installed("trajeval.launcher").toString(), "eval"));
+        cmd.addAll(List.of(args));
+        Result r = run(Map.of("TRAJEVAL_OPTS", "-XX:+PrintFlagsFinal"), cmd.toArray(new String[0]));
+        assertEquals(0, r.code(), r.err());
+        return r;
+    }
+
+    /** A small 3D TUM pair (the estimate 0.5 m off along x) and a batch file naming it. */
+    private Path[] smallPair() throws IOException {
+        StringBuilder ref = new StringBuilder();
+        StringBuilder est = new StringBuilder();
+        for (int i = 0; i < 200; i++) {
+            ref.append(String.format(Locale.ROOT, "%.2f %.3f %.3f 0 0 0 0 1%n", 0.1 * i, 0.2 * i, Math.sin(0.05 * i)));
+            est.append(String.format(Locale.ROOT, "%.2f %.3f %.3f 0 0 0 0 1%n", 0.1 * i, 0.2 * i + 0.5,
+                    Math.sin(0.05 * i)));
+        }
+        Path r = Files.writeString(tmp.resolve("ref.tum"), ref);
+        Path e = Files.writeString(tmp.resolve("est.tum"), est);
+        Path pairs = Files.writeString(tmp.resolve("pairs.csv"), "ref,est\n" + r + "," + e + "\n");
+        return new Path[] {r, e, pairs};
     }
 
     @Test
@@ -78,6 +111,25 @@ class JitDirectivesTest {
         assertTrue(r.err().contains(ADDED), r.err());
         assertFalse(r.out().contains("compiler directives"), r.out());
         assertTrue(r.out().contains("reported=0 "), r.out());
+    }
+
+    @Test
+    void cliPassesTheShippedFileToBatchesOnly() throws Exception {
+        Path[] p = smallPair();
+        Result batch = cliEval("--batch", p[2].toString(), "--reports", tmp.resolve("reports").toString());
+        Matcher m = FLAG.matcher(batch.err());
+        assertTrue(m.find(), batch.err());
+        assertEquals(shipped("trajeval.launcher").toRealPath(), Path.of(m.group(1)).toRealPath());
+        assertTrue(batch.err().contains(ADDED), batch.err());
+        assertFalse(batch.out().contains("compiler directives"), batch.out());
+        assertEquals(Files.readString(shipped()), Files.readString(shipped("trajeval.launcher")));
+
+        Result single = cliEval(p[0].toString(), p[1].toString(), "--json");
+        Matcher s = TO_STDERR.matcher(single.out());
+        assertTrue(s.find(), single.out());
+        assertEquals("false", s.group(1));
+        assertFalse(single.out().contains("compiler directives") || single.err().contains("compiler directives"),
+                single.err());
     }
 
     @Test

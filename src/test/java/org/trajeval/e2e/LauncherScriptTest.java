@@ -80,7 +80,8 @@ class LauncherScriptTest {
         Map<String, String> e = new java.util.HashMap<>(env);
         e.put("TRAJEVAL_OPTS", "-XX:+PrintFlagsFinal");
         Result r = launch(e, args);
-        Matcher m = TIER.matcher(r.out());
+        // --batch runs with -XX:+DisplayVMOutputToStderr (JitDirectivesTest): the flags are on stderr
+        Matcher m = TIER.matcher(r.out() + r.err());
         assertTrue(m.find(), r.err());
         return Integer.parseInt(m.group(1));
     }
