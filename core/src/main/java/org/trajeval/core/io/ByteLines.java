@@ -49,8 +49,12 @@ final class ByteLines implements Closeable {
     private final long expectedBytes;
 
     private ByteLines(String source, InputStream in, long maxBytes, long expectedBytes) {
-        this(source, in, maxBytes, expectedBytes, sha256(), new byte[BLOCK_BYTES + READ_AHEAD]);
+        this(source, in, maxBytes, expectedBytes, sha256(), SpareBuffer.take());
+        borrowed = true;
     }
+
+    /** True when {@link #buf} came from {@link SpareBuffer} and goes back there at {@link #close}. */
+    private boolean borrowed;
 
     private ByteLines(String source, InputStream in, long maxBytes, long expectedBytes, MessageDigest sha,
             byte[] buf) {
@@ -360,6 +364,8 @@ final class ByteLines implements Closeable {
         }
         limit += n;
         bytesRead += n;
+        // what a parser may read past the bytes read is zero, as in a fresh buffer (a spare one held another file)
+        java.util.Arrays.fill(buf, limit, Math.min(buf.length, limit + READ_AHEAD), (byte) 0);
         if (bytesRead > maxBytes) {
             throw FileProblems.tooManyBytes(source, bytesRead, maxBytes);
         }
@@ -417,12 +423,21 @@ final class ByteLines implements Closeable {
         return HexFormat.of().formatHex(sha.digest());
     }
 
+    /**
+     * Closes the file; a buffer borrowed from {@link SpareBuffer} goes back for the next file
+     * read on this thread, so nothing may read {@link #buffer()} after this.
+     */
     @Override
     public void close() {
         try {
             in.close();
         } catch (IOException e) {
             // nothing was lost: every byte needed is already read
+        }
+        if (borrowed) {
+            borrowed = false;
+            SpareBuffer.giveBack(buf);
+            buf = null;
         }
     }
 }

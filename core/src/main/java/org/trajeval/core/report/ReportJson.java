@@ -10,11 +10,14 @@ import java.io.UncheckedIOException;
 import java.nio.channels.FileChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
+import java.nio.file.attribute.FileAttribute;
 import java.nio.file.attribute.PosixFilePermissions;
+import java.util.concurrent.ThreadLocalRandom;
 
 /** Reads and writes reports as JSON (Jackson stays behind this package). */
 public final class ReportJson {
@@ -117,8 +120,13 @@ public final class ReportJson {
 
     /**
      * The first step of {@link #writeAtomically(Path, Content)}: the content in a temporary file
-     * beside {@code target} ({@code .NAME.*.tmp}), fsync'd, mode 0644 (where the file system has
+     * beside {@code target} ({@code .NAME.DIGITS.tmp}), fsync'd, mode 0644 (where the file system has
      * POSIX modes); the caller then {@link #moveIntoPlace moves it into place} or deletes it.
+     * The file is created new (never an existing file or link; mode 0600 until written) under a
+     * random name; a name another writer holds is skipped for the next. The folder is created
+     * (with its parents) only when the file cannot be: a report beside others costs no failed
+     * {@code mkdir}. The random names need no {@code SecureRandom}: exclusive creation, not an
+     * unguessable name, is what keeps two writers apart.
      *
      * @return the temporary file
      * @throws UncheckedIOException when it cannot be written (nothing is left behind)
@@ -127,10 +135,28 @@ public final class ReportJson {
         Path tmp = null;
         try {
             Path dir = target.toAbsolutePath().getParent();
-            Files.createDirectories(dir);
-            tmp = Files.createTempFile(dir, "." + target.getFileName() + ".", ".tmp");
-            try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE,
-                    StandardOpenOption.TRUNCATE_EXISTING)) {
+            String prefix = "." + target.getFileName() + ".";
+            FileChannel created = null;
+            boolean folderMade = false;
+            for (int clashes = 0; created == null; ) {
+                tmp = dir.resolve(prefix + Long.toUnsignedString(ThreadLocalRandom.current().nextLong()) + ".tmp");
+                try {
+                    created = FileChannel.open(tmp, NEW_FILE, ownerOnly(dir));
+                } catch (FileAlreadyExistsException e) {
+                    tmp = null;
+                    if (++clashes >= MAX_NAME_CLASHES) {
+                        throw e;
+                    }
+                } catch (IOException e) {
+                    tmp = null;
+                    if (folderMade) {
+                        throw e;
+                    }
+                    Files.createDirectories(dir); // the folder is missing (or not one: this throws what it did before)
+                    folderMade = true;
+                }
+            }
+            try (FileChannel ch = created) {
                 java.io.OutputStream out = java.nio.channels.Channels.newOutputStream(ch);
                 content.writeTo(out);
                 out.flush();
@@ -146,6 +172,19 @@ public final class ReportJson {
             deleteQuietly(tmp);
             throw new UncheckedIOException("could not write " + target, e);
         }
+    }
+
+    /** How a temporary file is opened: created here (never an existing file or link), for writing. */
+    private static final java.util.Set<StandardOpenOption> NEW_FILE =
+            java.util.EnumSet.of(StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
+    /** Names tried before a clash is reported (each clash means another writer took that name). */
+    private static final int MAX_NAME_CLASHES = 100;
+
+    /** @return mode 0600 on creation where {@code dir}'s file system has POSIX modes (none otherwise) */
+    private static FileAttribute<?>[] ownerOnly(Path dir) {
+        return dir.getFileSystem().supportedFileAttributeViews().contains("posix")
+                ? new FileAttribute<?>[] {PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rw-------"))}
+                : new FileAttribute<?>[0];
     }
 
     /**

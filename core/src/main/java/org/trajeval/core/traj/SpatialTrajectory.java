@@ -70,17 +70,46 @@ public final class SpatialTrajectory implements Trajectory {
                 throw new IllegalArgumentException("every column needs at least " + n + " values");
             }
         }
-        TimestampCheck.requireNonDecreasing(t, n);
-        for (double[] c : new double[][] {x, y, z, qw, qx, qy, qz}) {
-            TimestampCheck.requireFinite("pose", c, n);
-        }
-        for (int i = 0; i < n; i++) {
-            double norm = Math.sqrt(qw[i] * qw[i] + qx[i] * qx[i] + qy[i] * qy[i] + qz[i] * qz[i]);
-            if (!(norm > 0.0)) {
-                throw new IllegalArgumentException("quaternion " + i + " is zero");
+        if (!allValid(n, t, x, y, z, qw, qx, qy, qz)) {
+            TimestampCheck.requireNonDecreasing(t, n);
+            for (double[] c : new double[][] {x, y, z, qw, qx, qy, qz}) {
+                TimestampCheck.requireFinite("pose", c, n);
+            }
+            for (int i = 0; i < n; i++) {
+                if (!(quaternionNorm(qw[i], qx[i], qy[i], qz[i]) > 0.0)) {
+                    throw new IllegalArgumentException("quaternion " + i + " is zero");
+                }
             }
         }
         return new SpatialTrajectory(n, t, x, y, z, new double[][] {qw, qx, qy, qz}, null);
+    }
+
+    /**
+     * The checks of {@link #ofFirst} in one pass over the poses, without saying which failed
+     * (the checks are then run one by one, in their order, for the refusal): finite timestamps
+     * that do not decrease, finite values ({@code v * 0.0} is 0 exactly when v is finite) and a
+     * quaternion norm above 0 (its square: no square root).
+     *
+     * @return true when every check passes
+     */
+    private static boolean allValid(int n, double[] t, double[] x, double[] y, double[] z,
+            double[] qw, double[] qx, double[] qy, double[] qz) {
+        boolean valid = true;
+        double before = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < n; i++) {
+            double ti = t[i];
+            double zeros = x[i] * 0.0 + y[i] * 0.0 + z[i] * 0.0 + qw[i] * 0.0 + qx[i] * 0.0 + qy[i] * 0.0 + qz[i] * 0.0;
+            // sqrt(s) > 0 exactly when s > 0 (s = 0, NaN: both false; s = +inf: both true)
+            valid &= Double.isFinite(ti) & ti >= before & zeros == 0.0
+                    & qw[i] * qw[i] + qx[i] * qx[i] + qy[i] * qy[i] + qz[i] * qz[i] > 0.0;
+            before = ti;
+        }
+        return valid;
+    }
+
+    /** @return the norm of the quaternion (w, x, y, z) */
+    private static double quaternionNorm(double w, double x, double y, double z) {
+        return Math.sqrt(w * w + x * x + y * y + z * z);
     }
 
     /**
