@@ -6,6 +6,7 @@ import java.io.InputStream;
 import java.nio.file.Path;
 import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
+import java.util.Arrays;
 import java.util.HexFormat;
 import org.trajeval.core.InputException;
 import org.trajeval.core.InputProblem;
@@ -365,7 +366,7 @@ final class ByteLines implements Closeable {
         limit += n;
         bytesRead += n;
         // what a parser may read past the bytes read is zero, as in a fresh buffer (a spare one held another file)
-        java.util.Arrays.fill(buf, limit, Math.min(buf.length, limit + READ_AHEAD), (byte) 0);
+        Arrays.fill(buf, limit, Math.min(buf.length, limit + READ_AHEAD), (byte) 0);
         if (bytesRead > maxBytes) {
             throw FileProblems.tooManyBytes(source, bytesRead, maxBytes);
         }

@@ -5,8 +5,9 @@ package org.trajeval.core.io;
  * pipeline read two files per run, and a fresh 1 MiB buffer is zeroed for each (1.3 % of a
  * 10^4-pose file's read). A buffer is lent to one reader at a time (a reader opened while
  * another is open on the same thread gets a fresh one), and only a buffer of {@link #LENGTH}
- * bytes is kept (one grown for a long line is left to the collector). The bytes it holds are the last file's; {@link ByteLines} zeroes what a parser may
- * read past the bytes read, so a reader sees what it would in a fresh buffer. Memory: one
+ * bytes is kept (one grown for a long line is left to the collector). The bytes it holds are
+ * the last file's; {@link ByteLines} zeroes what a parser may read past the bytes read, so a
+ * reader sees what it would in a fresh buffer. Memory: one
  * buffer (about 1 MiB) per thread that has read a file, until the thread ends.
  */
 final class SpareBuffer {

@@ -17,6 +17,8 @@ import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.FileAttribute;
 import java.nio.file.attribute.PosixFilePermissions;
+import java.util.EnumSet;
+import java.util.Set;
 import java.util.concurrent.ThreadLocalRandom;
 
 /** Reads and writes reports as JSON (Jackson stays behind this package). */
@@ -175,16 +177,18 @@ public final class ReportJson {
     }
 
     /** How a temporary file is opened: created here (never an existing file or link), for writing. */
-    private static final java.util.Set<StandardOpenOption> NEW_FILE =
-            java.util.EnumSet.of(StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
+    private static final Set<StandardOpenOption> NEW_FILE =
+            EnumSet.of(StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
+    /** Mode 0600, as a temporary file is created where the file system has POSIX modes. */
+    private static final FileAttribute<?>[] OWNER_ONLY =
+            {PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rw-------"))};
+    private static final FileAttribute<?>[] NO_ATTRIBUTES = {};
     /** Names tried before a clash is reported (each clash means another writer took that name). */
     private static final int MAX_NAME_CLASHES = 100;
 
     /** @return mode 0600 on creation where {@code dir}'s file system has POSIX modes (none otherwise) */
     private static FileAttribute<?>[] ownerOnly(Path dir) {
-        return dir.getFileSystem().supportedFileAttributeViews().contains("posix")
-                ? new FileAttribute<?>[] {PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rw-------"))}
-                : new FileAttribute<?>[0];
+        return dir.getFileSystem().supportedFileAttributeViews().contains("posix") ? OWNER_ONLY : NO_ATTRIBUTES;
     }
 
     /**

@@ -22,7 +22,7 @@ import org.trajeval.core.InputText;
 final class StaleTempFiles {
     /** Age from which a temporary file is taken as abandoned. */
     static final Duration MIN_AGE = Duration.ofMinutes(10);
-    /** {@code .NAME.json.DIGITS.tmp}: Files.createTempFile(dir, ".NAME.json.", ".tmp"). */
+    /** {@code .NAME.json.DIGITS.tmp}: the temporary name {@code ReportJson.writeBeside} gives a file NAME.json. */
     static final Pattern OURS = Pattern.compile("\\..+\\.json\\.[0-9]+\\.tmp");
     private static final Logger LOG = LoggerFactory.getLogger(StaleTempFiles.class);
 
