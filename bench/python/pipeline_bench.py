@@ -44,12 +44,13 @@ def generate(data, bundles, poses):
 
 
 def timed(cmd, lock, cwd=None):
-    """Runs cmd under the shared lock, nice 10 and /usr/bin/time -v: wall s, CPU s, peak RSS MiB, load, output."""
+    """Runs cmd under the shared lock, nice 10 and /usr/bin/time -v: wall s, CPU s, peak RSS MiB, load, output.
+    lock None: the caller holds the lock already (run.py under run-benchmarks.sh; a second flock would wait forever)."""
     fd, tfile = tempfile.mkstemp(prefix="pipeline-bench-", suffix=".time")
     os.close(fd)
     try:
         la0 = load()
-        r = subprocess.run(["flock", lock, "nice", "-n", "10", "/usr/bin/time", "-v", "-o", tfile] + cmd,
+        r = subprocess.run((["flock", lock] if lock else []) + ["nice", "-n", "10", "/usr/bin/time", "-v", "-o", tfile] + cmd,
                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, cwd=cwd)
         la1 = load()
         text = open(tfile).read()
@@ -140,11 +141,15 @@ def throughput(a):
     # the same numbers from both front ends (and both builds): report files differ only in name
     drains = results[("drain", "after")][0]["ate"]
     if ("batch", "after") in results:
-        batches = results[("batch", "after")][0]["ate"]
-        for f, v in drains.items():
-            if batches.get(f) != v:
-                raise SystemExit(f"ATE of {f} differs: pipeline {v}, eval --batch {batches.get(f)}")
+        same_ate(drains, results[("batch", "after")][0]["ate"])
         print(f"checked: pipeline and eval --batch give the same ATE RMSE, bit for bit, on {len(drains)} runs")
+
+
+def same_ate(drains, batches):
+    """Stops unless every report of the drain has the same ATE RMSE as eval --batch's of that name."""
+    for f, v in drains.items():
+        if batches.get(f) != v:
+            raise SystemExit(f"ATE of {f} differs: pipeline {v}, eval --batch {batches.get(f)}")
 
 
 def backlog(a):

@@ -19,14 +19,29 @@ import json
 import os
 import platform
 import re
+import shutil
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 
+import issue15_targets
+import pipeline_bench
+from bench_commands import EVO_3D, LESSON_3D, PLANAR_LESSON, evo_ape_rpe, trajeval_eval
+
 HERE = os.path.dirname(os.path.abspath(__file__))
-LESSON_OPTS = ["--convention", "lesson", "--association", "interpolate", "--align", "se2",
-               "--rpe-delta", "1", "--rpe-unit", "s", "--json"]
+# the rows of one size, in the order the table lists them
+PLANAR_TOOLS = ["trajeval (1 core)", "trajeval (2 cores)", "numpy lesson", "evo (ape + rpe)"]
+SPATIAL_TOOLS = ["trajeval 3D evo se3 (1 core)", "trajeval 3D evo se3 (2 cores)", "trajeval 3D lesson se3 (1 core)",
+                 "trajeval 3D lesson se3 (2 cores)", "evo 3D (ape + rpe)"]
+# the order they run in (the first tool rotates each run): each 3D case next to the planar case with the
+# same threads, so that the ratios of item 1 divide runs seconds apart, not minutes
+RUN_ORDER = ["trajeval (1 core)", "trajeval 3D evo se3 (1 core)", "trajeval 3D lesson se3 (1 core)",
+             "trajeval (2 cores)", "trajeval 3D evo se3 (2 cores)", "trajeval 3D lesson se3 (2 cores)",
+             "numpy lesson", "evo (ape + rpe)", "evo 3D (ape + rpe)"]
+EVO_TOOLS = {"evo (ape + rpe)", "evo 3D (ape + rpe)"}
+BUNDLE_POSES, BACKLOG_POSES = 10000, 100
 
 
 def sh(cmd, **kw):
@@ -82,6 +97,27 @@ def fmt_n(n):
     return f"10^{e}" if n == 10 ** e else str(n)
 
 
+def tool_commands(trajeval, py, evo_bin, d, n, with_evo):
+    """Every tool's commands on the pairs of n poses in directory d (a tool's processes run one after
+    the other; its wall and CPU are their sums, its peak RSS the largest)."""
+    ref, est = f"{d}/planar_{n}_ref.csv", f"{d}/planar_{n}_est.csv"
+    sref, sest = f"{d}/spatial_{n}_ref.tum", f"{d}/spatial_{n}_est.tum"
+    tools = {
+        "trajeval (1 core)": [trajeval_eval(trajeval, ref, est, PLANAR_LESSON, 1)],
+        "trajeval (2 cores)": [trajeval_eval(trajeval, ref, est, PLANAR_LESSON, 2)],
+        "numpy lesson": [[py, os.path.join(HERE, "lesson_numpy.py"), ref, est]],
+        "trajeval 3D evo se3 (1 core)": [trajeval_eval(trajeval, sref, sest, EVO_3D + ["--align", "se3"], 1)],
+        "trajeval 3D evo se3 (2 cores)": [trajeval_eval(trajeval, sref, sest, EVO_3D + ["--align", "se3"], 2)],
+        "trajeval 3D lesson se3 (1 core)": [trajeval_eval(trajeval, sref, sest, LESSON_3D + ["--align", "se3"], 1)],
+        "trajeval 3D lesson se3 (2 cores)": [trajeval_eval(trajeval, sref, sest, LESSON_3D + ["--align", "se3"], 2)],
+    }
+    if with_evo:
+        # planar: 100 frames = 1 s at 100 Hz (evo has no seconds unit); 3D: 1 frame, as --convention evo
+        tools["evo (ape + rpe)"] = evo_ape_rpe(evo_bin, f"{d}/planar_{n}_ref.tum", f"{d}/planar_{n}_est.tum", 100)
+        tools["evo 3D (ape + rpe)"] = evo_ape_rpe(evo_bin, sref, sest, 1)
+    return tools
+
+
 class Bench:
     def __init__(self, a):
         self.a = a
@@ -101,21 +137,7 @@ class Bench:
                 "--seed", str(self.a.seed)])
 
     def tools(self, n):
-        d = self.data
-        ref, est = f"{d}/planar_{n}_ref.csv", f"{d}/planar_{n}_est.csv"
-        t = self.a.trajeval
-        tools = {
-            "trajeval (1 core)": [["taskset", "-c", "0", t, "eval", ref, est, "--threads", "1"] + LESSON_OPTS],
-            "trajeval (2 cores)": [[t, "eval", ref, est, "--threads", "2"] + LESSON_OPTS],
-            "numpy lesson": [[self.py, os.path.join(HERE, "lesson_numpy.py"), ref, est]],
-        }
-        if n <= self.a.max_evo:
-            rt, et = f"{d}/planar_{n}_ref.tum", f"{d}/planar_{n}_est.tum"
-            tools["evo (ape + rpe)"] = [
-                [f"{self.evo_bin}/evo_ape", "tum", rt, et, "-a", "--no_warnings"],
-                [f"{self.evo_bin}/evo_rpe", "tum", rt, et, "-a", "--delta", "100", "--delta_unit", "f",
-                 "--no_warnings"]]
-        return tools
+        return tool_commands(self.a.trajeval, self.py, self.evo_bin, self.data, n, n <= self.a.max_evo)
 
     def run_tool(self, name, cmds, n, run):
         """Returns a sample {wall_s, rss_bytes, cpu_s, other_cpu_s, load1, waited_s} and the output path."""
@@ -136,6 +158,7 @@ class Bench:
         n = 1000
         self.gen(n, "planar")
         self.gen(n, "planar-tum")
+        self.gen(n, "spatial")
         base = {}
         for name, cmds in self.tools(n).items():
             rs = [self.run_tool(name, cmds, n, r)[0]["rss_bytes"] for r in range(3)]
@@ -206,20 +229,23 @@ class Bench:
         rows, checks = [], {}
         for n in a.sizes:
             self.gen(n, "planar")
+            self.gen(n, "spatial")
             if n <= a.max_evo:
                 self.gen(n, "planar-tum")
             tools = self.tools(n)
-            names = list(tools)
+            names = [k for k in RUN_ORDER if k in tools]
             samples = {k: [] for k in names}
             outputs = {}
             runs = a.runs_at.get(n, a.runs)
             for run in range(runs):
                 order = names[run % len(names):] + names[:run % len(names)]
                 for name in order:
+                    if name in EVO_TOOLS and len(samples[name]) >= a.evo_runs:
+                        continue
                     x, out = self.run_tool(name, tools[name], n, run)
                     samples[name].append(x)
                     outputs[name] = out
-                    print(f"  {fmt_n(n):>5} run {run + 1}/{runs} {name:20s} {x['wall_s']:8.2f} s "
+                    print(f"  {fmt_n(n):>5} run {run + 1}/{runs} {name:32s} {x['wall_s']:8.2f} s "
                           f"{x['rss_bytes'] / 2**20:8.0f} MiB  CPU {x['cpu_s']:6.2f} s  others {x['other_cpu_s']:5.2f} s  "
                           f"load {x['load1']:.2f}" + (f"  (waited {x['waited_s']:.1f} s)" if x["waited_s"] >= 1 else ""),
                           flush=True)
@@ -227,7 +253,7 @@ class Bench:
             for k, v in checks[n].items():
                 print(f"  {fmt_n(n):>5} agreement with {k}: {'OK' if v['ok'] else 'MISMATCH'}\n" + v["detail"])
             t_ref = statistics.median(x["wall_s"] for x in samples["trajeval (1 core)"])
-            for name in names:
+            for name in [k for k in PLANAR_TOOLS + SPATIAL_TOOLS if k in names]:
                 col = {k: [x[k] for x in samples[name]] for k in samples[name][0]}
                 wall = statistics.median(col["wall_s"])
                 rss = statistics.median(col["rss_bytes"])
@@ -240,9 +266,71 @@ class Bench:
                              "baseline_rss_bytes": base[name], "time_ratio_vs_trajeval_1core": wall / t_ref})
         result = {"date": datetime.datetime.now().astimezone().isoformat(timespec="seconds"),
                   "machine": machine(), "runs": a.runs, "runs_at": {str(k): v for k, v in a.runs_at.items()},
-                  "quiet_wait_s": a.quiet_wait, "max_evo": a.max_evo, "max_check": a.max_check,
-                  "seed": a.seed, "rows": rows, "agreement": {str(k): v for k, v in checks.items()}}
+                  "evo_runs": a.evo_runs, "quiet_wait_s": a.quiet_wait, "max_evo": a.max_evo,
+                  "max_check": a.max_check, "seed": a.seed, "rows": rows,
+                  "agreement": {str(k): v for k, v in checks.items()},
+                  "commands": {k: [" ".join(c).replace(HERE, "bench/python") for c in v] for k, v in
+                               tool_commands("trajeval", "python", "", "DATA", "N", True).items()}}
+        if a.pipeline or a.backlog:
+            result.update(self.pipeline_rows())
         self.finish(result, checks)
+
+    def pipeline_rows(self):
+        """The drain of --pipeline bundles of 10^4-pose 3D pairs and eval --batch on the same pairs,
+        alternated (pipeline_bench.py's drain and batch, which check every run's output), --runs times;
+        with --backlog, one drain of a backlog of 10^3 and one of 10^5 100-pose bundles. The lock is
+        not taken again: run-benchmarks.sh runs under it as a whole."""
+        a = self.a
+        os.makedirs(a.pipeline_data, exist_ok=True)
+        scratch = tempfile.mkdtemp(prefix="runs-", dir=a.pipeline_data)
+        out = {}
+        try:
+            if a.pipeline:
+                template = pipeline_bench.generate(a.pipeline_data, a.pipeline, BUNDLE_POSES)
+                cases = {"drain": lambda: pipeline_bench.drain(a.trajeval_pipeline, template, scratch, None,
+                                                               a.pipeline_workers, a.pipeline),
+                         "batch": lambda: pipeline_bench.batch(a.trajeval, template + ".pairs.csv", scratch, None)}
+                samples = {k: [] for k in cases}
+                for run in range(a.pipeline_runs):
+                    for name in (list(cases) if run % 2 == 0 else list(cases)[::-1]):
+                        x = self.pipeline_run(cases[name])
+                        samples[name].append(x)
+                        print(f"  pipeline run {run + 1}/{a.pipeline_runs} {name:6s} {x['wall']:7.2f} s "
+                              f"{a.pipeline / x['wall']:6.1f} runs/s  CPU {x['cpu']:6.2f} s  {x['rss']:6.0f} MiB  "
+                              f"load {x['load'][0]:.2f}-{x['load'][1]:.2f}", flush=True)
+                pipeline_bench.same_ate(samples["drain"][0]["ate"], samples["batch"][0]["ate"])
+                out["pipeline"] = [pipeline_row(k, a.pipeline, v) for k, v in samples.items()]
+                out["pipeline_ate_checked"] = len(samples["drain"][0]["ate"])
+            if a.backlog:
+                backlog = {}
+                for key, n in (("small", 1000), ("large", 100000)):
+                    template = pipeline_bench.generate(a.pipeline_data, n, BACKLOG_POSES)
+                    x = self.pipeline_run(lambda: pipeline_bench.drain(a.trajeval_pipeline, template, scratch, None,
+                                                                       a.pipeline_workers, n))
+                    print(f"  backlog of {n} bundles {x['wall']:7.2f} s  {x['rss']:6.0f} MiB", flush=True)
+                    backlog[key] = pipeline_row("drain", n, [x]) | {"bundles": n}
+                backlog["ratio"] = backlog["large"]["median_rss_mib"] / backlog["small"]["median_rss_mib"]
+                out["backlog"] = backlog
+        finally:
+            shutil.rmtree(scratch, ignore_errors=True)
+        return out
+
+    def pipeline_run(self, run):
+        waited = wait_quiet(self.a.quiet_wait) if self.a.quiet_wait > 0 else 0.0
+        x = run()
+        x.pop("out", None)
+        x["waited_s"] = waited
+        return x
+
+
+def pipeline_row(case, bundles, runs):
+    """Median and best of pipeline_bench's runs (wall s, CPU s, peak RSS MiB, load before-after)."""
+    walls = [x["wall"] for x in runs]
+    return {"case": case, "runs": bundles, "samples": len(runs), "median_wall_s": statistics.median(walls),
+            "walls_s": walls, "median_runs_per_s": bundles / statistics.median(walls),
+            "best_runs_per_s": bundles / min(walls), "median_cpu_ms_per_run": statistics.median(
+                x["cpu"] for x in runs) * 1000 / bundles, "median_rss_mib": statistics.median(x["rss"] for x in runs),
+            "loads1": [list(x["load"]) for x in runs]}
 
 
 def machine():
@@ -265,7 +353,10 @@ def markdown(r):
     m = r["machine"]
     lines = [f"Measured {r['date']} on {m['cpu']}, {m['logical_cpus']} logical CPUs, {m['memory']} RAM, "
              f"{m['os']}; {m['java']}; Python {m['python']}, numpy {m['numpy']}, pandas {m['pandas']}, "
-             f"evo {m['evo']}. Median of {runs_text(r)} per tool and size, tools alternated"
+             f"evo {m['evo']}. Median of {runs_text(r)} per tool and size"
+             + (f" (evo: its first {r['evo_runs']}, `--evo-runs`)" if "evo_runs" in r else "")
+             + ", all tools of a size in one rotation (each 3D case next to the planar case with the same "
+             "threads, so that their ratio divides runs seconds apart; the first tool moves by one each run)"
              + (f", each run started once the machine had been idle for 0.5 s (waiting at most "
                 f"{r['quiet_wait_s']:g} s; `--quiet-wait`)" if r.get("quiet_wait_s") else "")
              + f"; evo run up to {fmt_n(r['max_evo'])} poses (`--max-evo`). CPU is the tool's user + sys; "
@@ -296,7 +387,47 @@ def markdown(r):
             worst = max((float(x) for x in re.findall(r"difference ([0-9.e+-]+)", v["detail"])), default=0.0)
             lines.append(f"- {fmt_n(int(n))}: {what}: {'agree' if v['ok'] else 'MISMATCH'}, "
                          f"worst relative difference {worst:.1e}")
+    if "commands" in r:
+        lines += ["", "What each row runs (DATA: the seeded pairs of `bench/python/generate.py`, N: poses; "
+                  "a row of two commands adds their wall and CPU times and takes the larger peak RSS):"]
+        lines += [f"- {k}: " + " + ".join(f"`{c}`" for c in v) for k, v in r["commands"].items()]
+    lines += pipeline_markdown(r)
+    lines += [""] + issue15_targets.markdown(r)
     return "\n".join(lines) + "\n"
+
+
+def pipeline_markdown(r):
+    """The pipeline rows (--pipeline, --backlog) as a second table, with what they run."""
+    rows = r.get("pipeline", []) + [r["backlog"][k] for k in ("small", "large") if "backlog" in r]
+    if not rows:
+        return []
+    lines = ["", "Pipeline rows (`--pipeline`, `--backlog`; run at `nice -n 10` by `bench/python/pipeline_bench.py`, "
+             "each sample after the same wait for an idle machine; drain and batch alternated, median of the "
+             "samples):", "",
+             "| case | runs per sample | samples | median wall (s) | wall min-max (s) | runs/s (median) | "
+             "runs/s (best) | CPU ms per run | peak RSS (MiB) | load before-after |",
+             "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |"]
+    for p in rows:
+        what = ({"drain": "trajeval-pipeline watch --drain", "batch": "trajeval eval --batch"}[p["case"]]
+                + (f", backlog of {p['bundles']} {BACKLOG_POSES}-pose bundles" if "bundles" in p else
+                   f", {BUNDLE_POSES}-pose 3D bundles"))
+        lines.append(f"| {what} | {p['runs']} | {p['samples']} | {p['median_wall_s']:.2f} | "
+                     f"{min(p['walls_s']):.2f}-{max(p['walls_s']):.2f} | {p['median_runs_per_s']:.1f} | "
+                     f"{p['best_runs_per_s']:.1f} | {p['median_cpu_ms_per_run']:.1f} | {p['median_rss_mib']:.0f} | "
+                     + ", ".join(f"{a:.1f}-{b:.1f}" for a, b in p["loads1"]) + " |")
+    lines += ["", "- trajeval-pipeline watch --drain: `trajeval-pipeline watch --root R --drain`, R a fresh root whose "
+              "`incoming/` holds hard links to the seeded bundles (`bench/pipeline/GenerateBundles.java`: a folder "
+              "with a 3D TUM pair and run.yaml; the service's default lesson preset, fsync'd reports and ledger, "
+              "atomic moves); default workers unless `--pipeline-workers`",
+              "- trajeval eval --batch: `trajeval eval --batch PAIRS.csv --reports OUT --convention lesson --threads 2` "
+              "on the same pairs (one report per pair + summary.csv)"]
+    if "pipeline_ate_checked" in r:
+        lines.append(f"- checked: the drain and eval --batch gave the same ATE RMSE, bit for bit, on "
+                     f"{r['pipeline_ate_checked']} reports")
+    if "backlog" in r:
+        lines.append(f"- backlog: peak RSS of the drain of {r['backlog']['large']['bundles']} bundles / of "
+                     f"{r['backlog']['small']['bundles']}: {r['backlog']['ratio']:.2f}x (one run each)")
+    return lines
 
 
 def runs_text(r):
@@ -327,6 +458,17 @@ def parse_args():
     ap.add_argument("--quiet-wait", type=float, default=10.0, metavar="SECONDS",
                     help="before each run, wait up to this long for 0.5 s of idle machine (0: never wait)")
     ap.add_argument("--max-evo", type=int, default=1_000_000)
+    ap.add_argument("--evo-runs", type=int, default=1, metavar="RUNS",
+                    help="runs of each evo row per size (3D evo takes 1-2 min per run at 10^6)")
+    ap.add_argument("--pipeline", type=int, default=0, metavar="BUNDLES",
+                    help="add the pipeline rows: drain of BUNDLES 10^4-pose 3D bundles and eval --batch (0: off)")
+    ap.add_argument("--pipeline-runs", type=int, default=3)
+    ap.add_argument("--pipeline-workers", type=int, default=0, help="--workers of the drain (0: its default)")
+    ap.add_argument("--backlog", action="store_true",
+                    help="add the backlog rows: peak RSS of a drain of 10^5 over 10^3 100-pose bundles (~5 min)")
+    ap.add_argument("--trajeval-pipeline", default=None)
+    ap.add_argument("--pipeline-data", default=os.path.join(os.environ.get("TMPDIR", "/tmp"),
+                                                            "trajeval-pipeline-bench"))
     ap.add_argument("--max-check", type=int, default=100_000)
     ap.add_argument("--seed", type=int, default=20240605)
     ap.add_argument("--data", default="bench/data")
@@ -335,6 +477,8 @@ def parse_args():
     ap.add_argument("--recheck", action="store_true",
                     help="re-run only the agreement checks on the saved outputs of the last run")
     a = ap.parse_args()
+    if (a.pipeline or a.backlog) and not a.trajeval_pipeline:
+        ap.error("--pipeline and --backlog need --trajeval-pipeline")
     a.sizes = [int(float(s)) for s in a.sizes.split(",")]
     a.runs_at = {}
     for item in a.runs_at_list:

@@ -15,6 +15,8 @@ import subprocess
 import sys
 import time
 
+from bench_commands import EVO_3D, LESSON_3D, PLANAR_LESSON, evo_ape_rpe, trajeval_eval
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
@@ -42,19 +44,13 @@ def timed(cmd, out=subprocess.DEVNULL):
 def cases(t, d, n):
     p = [f"{d}/planar_{n}_ref.csv", f"{d}/planar_{n}_est.csv"]
     s = [f"{d}/spatial_{n}_ref.tum", f"{d}/spatial_{n}_est.tum"]
-    lesson2d = ["--convention", "lesson", "--association", "interpolate", "--align", "se2", "--rpe-delta", "1",
-                "--rpe-unit", "s", "--json"]
     return [
-        ("planar CSV, lesson, se2, 1 thread", ["taskset", "-c", "0", t, "eval"] + p + lesson2d + ["--threads", "1"]),
-        ("planar CSV, lesson, se2, 2 threads", [t, "eval"] + p + lesson2d + ["--threads", "2"]),
-        ("3D TUM, evo (nearest, RPE 1 frame), se3", [t, "eval"] + s + ["--convention", "evo", "--align", "se3",
-                                                                       "--json", "--threads", "2"]),
-        ("3D TUM, evo (nearest, RPE 1 frame), sim3", [t, "eval"] + s + ["--convention", "evo", "--align", "sim3",
-                                                                        "--json", "--threads", "2"]),
-        ("3D TUM, lesson (interpolate, RPE 1 s), se3, 1 thread", ["taskset", "-c", "0", t, "eval"] + s +
-         ["--convention", "lesson", "--align", "se3", "--json", "--threads", "1"]),
-        ("3D TUM, lesson (interpolate, RPE 1 s), se3, 2 threads", [t, "eval"] + s +
-         ["--convention", "lesson", "--align", "se3", "--json", "--threads", "2"]),
+        ("planar CSV, lesson, se2, 1 thread", trajeval_eval(t, *p, PLANAR_LESSON, 1)),
+        ("planar CSV, lesson, se2, 2 threads", trajeval_eval(t, *p, PLANAR_LESSON, 2)),
+        ("3D TUM, evo (nearest, RPE 1 frame), se3", trajeval_eval(t, *s, EVO_3D + ["--align", "se3"], 2)),
+        ("3D TUM, evo (nearest, RPE 1 frame), sim3", trajeval_eval(t, *s, EVO_3D + ["--align", "sim3"], 2)),
+        ("3D TUM, lesson (interpolate, RPE 1 s), se3, 1 thread", trajeval_eval(t, *s, LESSON_3D + ["--align", "se3"], 1)),
+        ("3D TUM, lesson (interpolate, RPE 1 s), se3, 2 threads", trajeval_eval(t, *s, LESSON_3D + ["--align", "se3"], 2)),
     ]
 
 
@@ -70,8 +66,7 @@ def evo_side_by_side(a, n, mine):
     trajeval's --convention evo --align se3 (nearest association within 0.01 s, SE(3) Umeyama, RPE
     over one frame); wall and CPU of the two added, peak RSS the larger, against the trajeval row."""
     ref, est = f"{a.data}/spatial_{n}_ref.tum", f"{a.data}/spatial_{n}_est.tum"
-    ape = [os.path.join(a.evo, "evo_ape"), "tum", ref, est, "-a"]
-    rpe = [os.path.join(a.evo, "evo_rpe"), "tum", ref, est, "-a", "--delta", "1", "--delta_unit", "f"]
+    ape, rpe = evo_ape_rpe(a.evo, ref, est, 1)
     runs = []
     for _ in range(a.evo_runs):
         x, y = timed(ape), timed(rpe)
