@@ -25,6 +25,8 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 GENERATOR = os.path.join(ROOT, "bench", "pipeline", "GenerateBundles.java")
+# eval --batch with the pipeline's settings: its default lesson preset, two threads
+BATCH_OPTIONS = ["--convention", "lesson", "--threads", "2"]
 
 
 def load():
@@ -95,7 +97,7 @@ def drain(launcher, template, scratch, lock, workers, expect):
 def batch(launcher, pairs, scratch, lock):
     out = tempfile.mkdtemp(prefix="batch-", dir=scratch)
     try:
-        cmd = [launcher, "eval", "--batch", pairs, "--reports", out, "--convention", "lesson", "--threads", "2"]
+        cmd = [launcher, "eval", "--batch", pairs, "--reports", out] + BATCH_OPTIONS
         r = timed(cmd, lock)
         if r["code"] != 0:
             raise SystemExit(f"eval --batch failed (exit {r['code']}): {' '.join(cmd)}\n{r['out'][-3000:]}")

@@ -19,15 +19,13 @@ import json
 import os
 import platform
 import re
-import shutil
 import statistics
 import subprocess
 import sys
-import tempfile
 import time
 
 import issue15_targets
-import pipeline_bench
+import pipeline_rows
 from bench_commands import EVO_3D, LESSON_3D, PLANAR_LESSON, evo_ape_rpe, trajeval_eval
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -41,7 +39,6 @@ RUN_ORDER = ["trajeval (1 core)", "trajeval 3D evo se3 (1 core)", "trajeval 3D l
              "trajeval (2 cores)", "trajeval 3D evo se3 (2 cores)", "trajeval 3D lesson se3 (2 cores)",
              "numpy lesson", "evo (ape + rpe)", "evo 3D (ape + rpe)"]
 EVO_TOOLS = {"evo (ape + rpe)", "evo 3D (ape + rpe)"}
-BUNDLE_POSES, BACKLOG_POSES = 10000, 100
 
 
 def sh(cmd, **kw):
@@ -272,66 +269,9 @@ class Bench:
                   "commands": {k: [" ".join(c).replace(HERE, "bench/python") for c in v] for k, v in
                                tool_commands("trajeval", "python", "", "DATA", "N", True).items()}}
         if a.pipeline or a.backlog:
-            result.update(self.pipeline_rows())
+            result.update(pipeline_rows.measure(
+                a, lambda: wait_quiet(a.quiet_wait) if a.quiet_wait > 0 else 0.0))
         self.finish(result, checks)
-
-    def pipeline_rows(self):
-        """The drain of --pipeline bundles of 10^4-pose 3D pairs and eval --batch on the same pairs,
-        alternated (pipeline_bench.py's drain and batch, which check every run's output), --runs times;
-        with --backlog, one drain of a backlog of 10^3 and one of 10^5 100-pose bundles. The lock is
-        not taken again: run-benchmarks.sh runs under it as a whole."""
-        a = self.a
-        os.makedirs(a.pipeline_data, exist_ok=True)
-        scratch = tempfile.mkdtemp(prefix="runs-", dir=a.pipeline_data)
-        out = {}
-        try:
-            if a.pipeline:
-                template = pipeline_bench.generate(a.pipeline_data, a.pipeline, BUNDLE_POSES)
-                cases = {"drain": lambda: pipeline_bench.drain(a.trajeval_pipeline, template, scratch, None,
-                                                               a.pipeline_workers, a.pipeline),
-                         "batch": lambda: pipeline_bench.batch(a.trajeval, template + ".pairs.csv", scratch, None)}
-                samples = {k: [] for k in cases}
-                for run in range(a.pipeline_runs):
-                    for name in (list(cases) if run % 2 == 0 else list(cases)[::-1]):
-                        x = self.pipeline_run(cases[name])
-                        samples[name].append(x)
-                        print(f"  pipeline run {run + 1}/{a.pipeline_runs} {name:6s} {x['wall']:7.2f} s "
-                              f"{a.pipeline / x['wall']:6.1f} runs/s  CPU {x['cpu']:6.2f} s  {x['rss']:6.0f} MiB  "
-                              f"load {x['load'][0]:.2f}-{x['load'][1]:.2f}", flush=True)
-                pipeline_bench.same_ate(samples["drain"][0]["ate"], samples["batch"][0]["ate"])
-                out["pipeline"] = [pipeline_row(k, a.pipeline, v) for k, v in samples.items()]
-                out["pipeline_ate_checked"] = len(samples["drain"][0]["ate"])
-            if a.backlog:
-                backlog = {}
-                for key, n in (("small", 1000), ("large", 100000)):
-                    template = pipeline_bench.generate(a.pipeline_data, n, BACKLOG_POSES)
-                    x = self.pipeline_run(lambda: pipeline_bench.drain(a.trajeval_pipeline, template, scratch, None,
-                                                                       a.pipeline_workers, n))
-                    print(f"  backlog of {n} bundles {x['wall']:7.2f} s  {x['rss']:6.0f} MiB", flush=True)
-                    backlog[key] = pipeline_row("drain", n, [x]) | {"bundles": n}
-                backlog["ratio"] = backlog["large"]["median_rss_mib"] / backlog["small"]["median_rss_mib"]
-                out["backlog"] = backlog
-        finally:
-            shutil.rmtree(scratch, ignore_errors=True)
-        return out
-
-    def pipeline_run(self, run):
-        waited = wait_quiet(self.a.quiet_wait) if self.a.quiet_wait > 0 else 0.0
-        x = run()
-        x.pop("out", None)
-        x["waited_s"] = waited
-        return x
-
-
-def pipeline_row(case, bundles, runs):
-    """Median and best of pipeline_bench's runs (wall s, CPU s, peak RSS MiB, load before-after)."""
-    walls = [x["wall"] for x in runs]
-    return {"case": case, "runs": bundles, "samples": len(runs), "median_wall_s": statistics.median(walls),
-            "walls_s": walls, "median_runs_per_s": bundles / statistics.median(walls),
-            "best_runs_per_s": bundles / min(walls), "median_cpu_ms_per_run": statistics.median(
-                x["cpu"] for x in runs) * 1000 / bundles, "median_rss_mib": statistics.median(x["rss"] for x in runs),
-            "loads1": [list(x["load"]) for x in runs]}
-
 
 def machine():
     cpu = open("/proc/cpuinfo").read()
@@ -391,43 +331,9 @@ def markdown(r):
         lines += ["", "What each row runs (DATA: the seeded pairs of `bench/python/generate.py`, N: poses; "
                   "a row of two commands adds their wall and CPU times and takes the larger peak RSS):"]
         lines += [f"- {k}: " + " + ".join(f"`{c}`" for c in v) for k, v in r["commands"].items()]
-    lines += pipeline_markdown(r)
+    lines += pipeline_rows.markdown(r, fmt_n)
     lines += [""] + issue15_targets.markdown(r)
     return "\n".join(lines) + "\n"
-
-
-def pipeline_markdown(r):
-    """The pipeline rows (--pipeline, --backlog) as a second table, with what they run."""
-    rows = r.get("pipeline", []) + [r["backlog"][k] for k in ("small", "large") if "backlog" in r]
-    if not rows:
-        return []
-    lines = ["", "Pipeline rows (`--pipeline`, `--backlog`; run at `nice -n 10` by `bench/python/pipeline_bench.py`, "
-             "each sample after the same wait for an idle machine; drain and batch alternated, median of the "
-             "samples):", "",
-             "| case | runs per sample | samples | median wall (s) | wall min-max (s) | runs/s (median) | "
-             "runs/s (best) | CPU ms per run | peak RSS (MiB) | load before-after |",
-             "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |"]
-    for p in rows:
-        what = ({"drain": "trajeval-pipeline watch --drain", "batch": "trajeval eval --batch"}[p["case"]]
-                + (f", backlog of {p['bundles']} {BACKLOG_POSES}-pose bundles" if "bundles" in p else
-                   f", {BUNDLE_POSES}-pose 3D bundles"))
-        lines.append(f"| {what} | {p['runs']} | {p['samples']} | {p['median_wall_s']:.2f} | "
-                     f"{min(p['walls_s']):.2f}-{max(p['walls_s']):.2f} | {p['median_runs_per_s']:.1f} | "
-                     f"{p['best_runs_per_s']:.1f} | {p['median_cpu_ms_per_run']:.1f} | {p['median_rss_mib']:.0f} | "
-                     + ", ".join(f"{a:.1f}-{b:.1f}" for a, b in p["loads1"]) + " |")
-    lines += ["", "- trajeval-pipeline watch --drain: `trajeval-pipeline watch --root R --drain`, R a fresh root whose "
-              "`incoming/` holds hard links to the seeded bundles (`bench/pipeline/GenerateBundles.java`: a folder "
-              "with a 3D TUM pair and run.yaml; the service's default lesson preset, fsync'd reports and ledger, "
-              "atomic moves); default workers unless `--pipeline-workers`",
-              "- trajeval eval --batch: `trajeval eval --batch PAIRS.csv --reports OUT --convention lesson --threads 2` "
-              "on the same pairs (one report per pair + summary.csv)"]
-    if "pipeline_ate_checked" in r:
-        lines.append(f"- checked: the drain and eval --batch gave the same ATE RMSE, bit for bit, on "
-                     f"{r['pipeline_ate_checked']} reports")
-    if "backlog" in r:
-        lines.append(f"- backlog: peak RSS of the drain of {r['backlog']['large']['bundles']} bundles / of "
-                     f"{r['backlog']['small']['bundles']}: {r['backlog']['ratio']:.2f}x (one run each)")
-    return lines
 
 
 def runs_text(r):
