@@ -23,7 +23,8 @@ OPS = {"<=": lambda m, t: m <= t, "<": lambda m, t: m < t, ">=": lambda m, t: m 
 def verdict(measured, op, target):
     """'met (margin X %)' or '**missed** by X %', X = |measured - target| / target."""
     gap = abs(measured - target) / target * 100
-    return f"met (margin {gap:.0f} %)" if OPS[op](measured, target) else f"**missed** by {gap:.0f} %"
+    pct = f"{gap:.1f} %" if gap < 10 else f"{gap:.0f} %"
+    return f"met (margin {pct})" if OPS[op](measured, target) else f"**missed** by {pct}"
 
 
 def _n(n):
