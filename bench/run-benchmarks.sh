@@ -19,8 +19,9 @@
 #   10 s each per run at 100 runs/s; B = 1000 is issue 15's item 2); --pipeline-runs R (default 3).
 # --backlog: add the backlog rows, one drain of 10^3 and one of 10^5 100-pose bundles (about 5 min).
 # --recheck: only re-run the agreement checks on the outputs of the last run (no timing).
-# Duration with the defaults on a quiet 2-core machine: about 20 min (10^6: 3D evo 1-2 min and planar
-# evo about 1 min, once each; 10^7: about 4 min); --pipeline 1000 adds about 2 min, --backlog about 5.
+# Duration with the defaults on a 2-core machine: about 13 min (10^6: 6 min, of which evo 1.5 min on
+# the planar and 2 min on the 3D pair, once each; 10^7: 4-5 min); --pipeline 1000 adds about 1 min,
+# --backlog about 5, --runs-at 1000000=9 about 2.5.
 # Needs python3 with venv, /usr/bin/time, taskset; PyPI for the first run (evo, numpy, pandas).
 set -euo pipefail
 cd "$(dirname "$0")/.."

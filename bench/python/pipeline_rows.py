@@ -96,10 +96,10 @@ def markdown(r, fmt_n):
     lines += ["", "- trajeval-pipeline watch --drain: `trajeval-pipeline watch --root R --drain`, R a fresh root whose "
               "`incoming/` holds hard links to the seeded bundles (`bench/pipeline/GenerateBundles.java`: a folder "
               "with a 3D TUM pair and run.yaml; the service's default lesson preset, fsync'd reports and ledger, "
-              "atomic moves); default workers unless `--pipeline-workers`",
-              "- trajeval eval --batch: `trajeval eval --batch PAIRS.csv --reports OUT "
-              + " ".join(pipeline_bench.BATCH_OPTIONS) + "` "
-              "on the same pairs (one report per pair + summary.csv)"]
+              "atomic moves); default workers unless `--pipeline-workers`"]
+    if "pipeline" in r:
+        lines.append("- trajeval eval --batch: `trajeval eval --batch PAIRS.csv --reports OUT "
+                     + " ".join(pipeline_bench.BATCH_OPTIONS) + "` on the same pairs (one report per pair + summary.csv)")
     if "pipeline_ate_checked" in r:
         lines.append(f"- checked: the drain and eval --batch gave the same ATE RMSE, bit for bit, on "
                      f"{r['pipeline_ate_checked']} reports")
