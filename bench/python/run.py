@@ -1,8 +1,12 @@
-"""Runs trajeval, the vectorised numpy lesson and evo alternately on the same seeded files,
-checks their numbers agree where their conventions agree, and writes the table.
+"""Runs trajeval, the vectorised numpy lesson and evo alternately on the same seeded files (planar
+CSV pairs; 3D TUM pairs for trajeval's evo and lesson conventions and evo side by side), checks
+their numbers agree where their conventions agree, optionally adds the pipeline rows
+(pipeline_rows.py), and writes one table with issue 15's targets judged under it
+(issue15_targets.py). The commands are bench_commands.py's.
 
 Timing: /usr/bin/time -v around each process (wall clock, user + sys CPU, peak RSS), R runs per
-tool and size, tools alternated (the starting tool rotates each run), median reported. Throughput
+tool and size (evo rows: the first --evo-runs), all tools of a size in one rotation (RUN_ORDER; the
+starting tool moves by one each run), median reported. Throughput
 is estimate poses / median wall time; memory per pose is (peak RSS - RSS of the same tool on a
 1000-pose pair) / poses.  Called by bench/run-benchmarks.sh, which prepares the venv and build.
 
