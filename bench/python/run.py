@@ -254,7 +254,7 @@ class Bench:
             for k, v in checks[n].items():
                 print(f"  {fmt_n(n):>5} agreement with {k}: {'OK' if v['ok'] else 'MISMATCH'}\n" + v["detail"])
             t_ref = statistics.median(x["wall_s"] for x in samples["trajeval (1 core)"])
-            for name in [k for k in PLANAR_TOOLS + SPATIAL_TOOLS if k in names]:
+            for name in [k for k in PLANAR_TOOLS + SPATIAL_TOOLS if samples.get(k)]:
                 col = {k: [x[k] for x in samples[name]] for k in samples[name][0]}
                 wall = statistics.median(col["wall_s"])
                 rss = statistics.median(col["rss_bytes"])
@@ -387,6 +387,8 @@ def parse_args():
     ap.add_argument("--recheck", action="store_true",
                     help="re-run only the agreement checks on the saved outputs of the last run")
     a = ap.parse_args()
+    if a.evo_runs < 0 or a.runs < 1:
+        ap.error("--runs wants at least 1, --evo-runs at least 0")
     if (a.pipeline or a.backlog) and not a.trajeval_pipeline:
         ap.error("--pipeline and --backlog need --trajeval-pipeline")
     a.sizes = [int(float(s)) for s in a.sizes.split(",")]
