@@ -1,6 +1,7 @@
 package org.trajeval.e2e;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -25,10 +26,11 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * The installed start script: it hands every argument to the command unchanged, and picks the JIT
  * by the size of an eval's input files (C1 only up to TRAJEVAL_C1_MAX_BYTES, both compilers above
- * and for --batch; docs/readme/startup.md).
+ * and for --batch; docs/readme/startup.md); a single eval compiles core's methods sooner.
  */
 class LauncherScriptTest {
     private static final Pattern TIER = Pattern.compile("\\bTieredStopAtLevel\\s+=\\s+(\\d+)");
+    private static final Pattern COMMAND = Pattern.compile("\\bCompileCommand\\s+\\+?=\\s+(\\S+)");
 
     @TempDir
     static Path tmp;
@@ -113,6 +115,54 @@ class LauncherScriptTest {
         Path pairs = Files.writeString(tmp.resolve("pairs.csv"), "ref,est\n\"" + ref + "\",\"" + est + "\"\n");
         assertEquals(4, tier(Map.of(), "eval", "--batch", pairs.toString(), "--reports", tmp.resolve("out").toString()));
         assertEquals(4, tier(Map.of(), "--version"));
+    }
+
+    /**
+     * @return the JVM's final flags of this run (stdout, or stderr where the launcher sends the JVM's output
+     *     there), whatever the command's exit code (the batch here reports the awkward names as it can)
+     */
+    private static String flags(Map<String, String> env, String... args) throws Exception {
+        Map<String, String> e = new java.util.HashMap<>(env);
+        e.put("TRAJEVAL_OPTS", "-XX:+PrintFlagsFinal");
+        Result r = launch(e, args);
+        return r.out() + r.err();
+    }
+
+    /** @return the values of CompileCommand the JVM was given, as PrintFlagsFinal lists them */
+    private static List<String> compileCommands(String flags) {
+        List<String> found = new ArrayList<>();
+        Matcher m = COMMAND.matcher(flags);
+        while (m.find()) {
+            found.add(m.group(1));
+        }
+        return found;
+    }
+
+    @Test
+    void singleEvalsCompileCoreSoonerBatchesAndOtherCommandsDoNot() throws Exception {
+        String sooner = "CompileThresholdScaling,org.trajeval.core.*::*,0.1";
+        // C1 only (small inputs) and both compilers (inputs above the limit)
+        assertTrue(compileCommands(flags(Map.of(), "eval", ref.toString(), est.toString(), "--json")).contains(sooner));
+        assertTrue(compileCommands(flags(Map.of("TRAJEVAL_C1_MAX_BYTES", "0"), "eval", ref.toString(), est.toString(),
+                "--json")).contains(sooner));
+        Path pairs = Files.writeString(tmp.resolve("pairs-sooner.csv"), "ref,est\n\"" + ref + "\",\"" + est + "\"\n");
+        List<String> batch = compileCommands(flags(Map.of(), "eval", "--batch", pairs.toString(), "--reports",
+                tmp.resolve("out-sooner").toString()));
+        assertTrue(batch.contains("quiet"), batch.toString());
+        assertFalse(batch.contains(sooner), batch.toString());
+        assertFalse(compileCommands(flags(Map.of(), "--version")).contains(sooner));
+    }
+
+    @Test
+    void aJvmReadsTheScalingAsCoresPackagesAtATenth() throws Exception {
+        String java = Paths.get(System.getProperty("java.home"), "bin", "java").toString();
+        Process p = new ProcessBuilder(java, "-XX:CompileCommand=CompileThresholdScaling,org.trajeval.core.*::*,0.1",
+                "-version").redirectErrorStream(true).start();
+        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertEquals(0, p.waitFor(), out);
+        // the JVM echoes the command it registered (the launcher's "quiet" silences this)
+        assertTrue(out.contains("CompileCommand: CompileThresholdScaling org/trajeval/core/*.* double"
+                + " CompileThresholdScaling = 0.100000"), out);
     }
 
     @Test
