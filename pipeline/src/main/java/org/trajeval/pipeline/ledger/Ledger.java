@@ -11,11 +11,10 @@ import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Map;
 import java.util.Optional;
-import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Function;
+import java.util.function.ToLongFunction;
 
 /**
  * The persistent record of every reported run: an append-only text file, one line per report
@@ -28,10 +27,11 @@ import java.util.function.Function;
  * only then decides. A line cut short by a crash is ignored (and cut off on the next open).
  *
  * <p>Memory: the ledger keeps, per reported version, only where its line lies in the file, its
- * version and its content hash's {@code hashCode} ({@link Known}, about 40 B, plus the run id as the
- * key), not the parsed line (about 380 B): a service that has reported 10^5 runs holds about 12 MB
- * for them. A lookup whose hash code matches reads that one line back (lines before the read
- * position are complete and never change) and compares the full hash.
+ * version and its content hash's {@code hashCode}, in primitive arrays found by a 64-bit key of the run
+ * id ({@link RunIndex}, about 40 B per run), not the parsed line (about 380 B) nor the run id: a service
+ * that has reported 10^5 runs holds about 4 MB for them. A key or hash code that matches is confirmed by
+ * reading that line back (lines before the read position are complete and never change) and comparing
+ * the run id and the full hash.
  */
 public final class Ledger implements AutoCloseable {
     private final Path file;
@@ -39,21 +39,27 @@ public final class Ledger implements AutoCloseable {
     private final ReentrantLock inProcess = new ReentrantLock();
     // written only under the in-process lock, after its line is in the file; read without it by the hints
     // (probablyReported, probableLatestVersion: a worker asks while another one commits)
-    private final Map<String, Known> byRun = new ConcurrentHashMap<>();
+    private final RunIndex byRun;
     private long readPosition;
 
-    private Ledger(Path file, FileChannel channel) {
+    private Ledger(Path file, FileChannel channel, ToLongFunction<String> runKey) {
         this.file = file;
         this.channel = channel;
+        this.byRun = new RunIndex(runKey, this::lineAt);
     }
 
     /** Opens (or creates) the ledger file and loads it. */
     public static Ledger open(Path file) {
+        return open(file, RunIndex::key);
+    }
+
+    /** {@link #open(Path)} with another 64-bit key of the run id (tests: keys that collide). */
+    static Ledger open(Path file, ToLongFunction<String> runKey) {
         try {
             Files.createDirectories(file.toAbsolutePath().getParent());
             FileChannel ch = FileChannel.open(file, StandardOpenOption.CREATE, StandardOpenOption.READ,
                     StandardOpenOption.WRITE);
-            Ledger l = new Ledger(file, ch);
+            Ledger l = new Ledger(file, ch, runKey);
             l.locked(view -> {
                 l.cutPartialTail();
                 return null;
@@ -114,7 +120,7 @@ public final class Ledger implements AutoCloseable {
      *     (no lock: a fast check before scoring; {@link #locked} decides)
      */
     public boolean probablyReported(String runId, String contentHash) {
-        return lookup(runId, contentHash).isPresent();
+        return byRun.find(runId, contentHash).isPresent();
     }
 
     /** @return every entry read so far, in file order (read back from the file) */
@@ -141,26 +147,15 @@ public final class Ledger implements AutoCloseable {
         }
     }
 
-    /**
-     * What the ledger keeps in memory of one reported version: where its line lies in the file, its
-     * version, its content hash's hash code, and the run's previous version, if any.
-     */
-    private record Known(long offset, int length, int version, int hash, Known earlier) {
-    }
-
     private final View view = new View() {
         @Override
         public Optional<LedgerEntry> find(String runId, String contentHash) {
-            return lookup(runId, contentHash);
+            return byRun.find(runId, contentHash);
         }
 
         @Override
         public int latestVersion(String runId) {
-            int v = 0;
-            for (Known k = byRun.get(runId); k != null; k = k.earlier()) {
-                v = Math.max(v, k.version());
-            }
-            return v;
+            return byRun.latestVersion(runId);
         }
 
         @Override
@@ -189,7 +184,7 @@ public final class Ledger implements AutoCloseable {
                 readPosition = pos;
                 long offset = start;
                 for (int i = 0; i < lines.length; i++) {
-                    index(entries.get(i), offset, lines[i].length - 1);
+                    byRun.add(entries.get(i), offset, lines[i].length - 1);
                     offset += lines[i].length;
                 }
             } catch (IOException e) {
@@ -198,27 +193,10 @@ public final class Ledger implements AutoCloseable {
         }
     };
 
-    private Optional<LedgerEntry> lookup(String runId, String contentHash) {
-        int h = contentHash.hashCode();
-        for (Known k = byRun.get(runId); k != null; k = k.earlier()) {
-            if (k.hash() == h) {
-                LedgerEntry e = lineAt(k);
-                if (e != null && e.contentHash().equals(contentHash)) {
-                    return Optional.of(e);
-                }
-            }
-        }
-        return Optional.empty();
-    }
-
-    private void index(LedgerEntry e, long offset, int length) {
-        byRun.put(e.runId(), new Known(offset, length, e.version(), e.contentHash().hashCode(), byRun.get(e.runId())));
-    }
-
-    /** @return the entry whose line {@code k} points at (a complete line: before the read position) */
-    private LedgerEntry lineAt(Known k) {
+    /** @return the entry of the complete line at {@code offset}, {@code length} bytes without its newline */
+    private LedgerEntry lineAt(long offset, int length) {
         try {
-            return LedgerEntry.parse(new String(readRange(k.offset(), k.offset() + k.length()), StandardCharsets.UTF_8));
+            return LedgerEntry.parse(new String(readRange(offset, offset + length), StandardCharsets.UTF_8));
         } catch (IOException e) {
             throw new UncheckedIOException("could not read the ledger " + file + ": " + e.getMessage(), e);
         }
@@ -258,7 +236,7 @@ public final class Ledger implements AutoCloseable {
             if (bytes[i] == '\n') {
                 LedgerEntry e = LedgerEntry.parse(new String(bytes, lineStart, i - lineStart, StandardCharsets.UTF_8));
                 if (e != null) {
-                    index(e, readPosition + lineStart, i - lineStart);
+                    byRun.add(e, readPosition + lineStart, i - lineStart);
                 }
                 lineStart = i + 1;
             }
