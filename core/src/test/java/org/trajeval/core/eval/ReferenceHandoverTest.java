@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Arrays;
 import java.util.Random;
@@ -45,7 +46,7 @@ class ReferenceHandoverTest {
                                 Evaluator.evaluateConsumingReference(ref, pair("est", n, 5), o, par));
                         assertEquals(kept, consumed, n + " poses, " + threads + " threads, " + unit);
                         // the probe: the reference's own column was written (the errors are not its values)
-                        assertEquals(true, x[n / 2] != before, "x column reused at " + n);
+                        assertTrue(x[n / 2] != before, "x column reused at " + n);
                     }
                 }
             }
