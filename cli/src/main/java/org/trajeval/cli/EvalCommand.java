@@ -155,7 +155,9 @@ public final class EvalCommand implements Callable<Integer> {
                     DataKind.of(ref.trajectory(), est.trajectory()));
             report = plots.wanted() ? EvalPlots.write(ref, est, options,
                     SettingsResolver.subTrajectoryLengthsM(settings), plots, spec.commandLine().getErr())
-                    : Evaluator.evaluate(ref, est, options, work.parallelism());
+                    // the single eval's own pair, not used after the report: the reference's columns may serve as
+                    // the evaluator's error arrays (the same report, 24 B per pose less at the peak)
+                    : Evaluator.evaluateConsumingReference(ref, est, options, work.parallelism());
             notices = EvalNotices.of(report, options, (Integer) settings.get(Setting.N_TO_ALIGN));
         }
         PrintWriter err = spec.commandLine().getErr();

@@ -45,6 +45,8 @@ final class AssociatedColumns implements PosePairs {
     private SpatialErrors spatial;
     /** The 2x2 kernels when the pairs and the alignment are planar; null otherwise. */
     private PlanarErrors planar;
+    /** Where the 2x2 kernels keep their ATE rotations (at least m values), null to allocate. */
+    private double[] planarRotationStore;
 
     private AssociatedColumns(Trajectory ref, Trajectory est, InterpolatedReference interpolated, int[] refIndex,
             int[] estIndex, int k0, int m, double off, Parallelism fill) {
@@ -162,10 +164,18 @@ final class AssociatedColumns implements PosePairs {
         return ateRotation != null && !Double.isNaN(ateRotation[k]);
     }
 
+    /**
+     * The 2x2 kernels set by the next {@link #align} keep the ATE rotations the RPE computes in
+     * {@code store} (at least m values, overwritten) instead of an array of their own.
+     */
+    void keepPlanarRotationsIn(double[] store) {
+        planarRotationStore = store;
+    }
+
     /** Sets the alignment applied to the estimate before the errors (identity for model NONE). */
     void align(AlignmentTransform tf) {
         spatial = new SpatialErrors(this, est, ateRotation, tf);
-        planar = PlanarErrors.of(est, estIndex, k0, interpolated, ref, refIndex, tf, m);
+        planar = PlanarErrors.of(est, estIndex, k0, interpolated, ref, refIndex, tf, m, planarRotationStore);
     }
 
     /**

@@ -24,7 +24,10 @@ import org.trajeval.core.traj.Trajectory;
  * matching 8 B of index maps instead, and for SE(3) pairs the ATE rotation errors the RPE computes,
  * 8 B), for planar kernels the ATE rotation errors the RPE
  * computes (8 B per pose), and two error arrays (16 B per pose) that the RPE and then the ATE fill;
- * every RPE pair and every ATE pose is computed once.
+ * every RPE pair and every ATE pose is computed once. A caller that hands over an interpolated planar
+ * pair's reference ({@code consumeReference}) saves the last three (24 B per pose): the reference's own
+ * x, y and yaw columns, which nothing reads once the interpolated columns are filled (the coverage
+ * reads its stamps only), serve as the two error arrays and the kept ATE rotations.
  */
 final class ColumnarEvaluator {
     private ColumnarEvaluator() {
@@ -41,9 +44,14 @@ final class ColumnarEvaluator {
                 && o.drift() == null;
     }
 
-    /** @return the report's parts, or {@code null} when the general path must decide (refusals, edge cases) */
+    /**
+     * @param consumeReference true when the caller will not use {@code reference} again: its x, y and
+     *     yaw columns may then be overwritten ({@link #handedOverColumns})
+     * @return the report's parts, or {@code null} when the general path must decide (refusals, edge
+     *     cases; the reference is then untouched)
+     */
     static ReportParts evaluate(Trajectory reference, Trajectory estimate, EvaluationOptions o, String refName,
-            String estName, Parallelism par) {
+            String estName, Parallelism par, boolean consumeReference) {
         Trajectory ref = reference;
         Trajectory est = estimate;
         if (o.projection() == PlanarProjection.XY_BEFORE_ALIGNMENT) {
@@ -63,11 +71,20 @@ final class ColumnarEvaluator {
         }
         AssociatedColumns pairs = a.pairs();
         int m = pairs.size();
-        // the error arrays are allocated (zeroed: page faults) beside the fit's covariance pass
+        // the error arrays are the handed-over reference's columns, or are allocated (zeroed: page
+        // faults) beside the fit's covariance pass
+        double[][] handed = consumeReference ? handedOverColumns(reference, estimate, o, m) : null;
         double[][] errors = new double[2][];
+        if (handed != null) {
+            errors[0] = handed[0];
+            errors[1] = handed[1];
+            pairs.keepPlanarRotationsIn(handed[2]);
+        }
         ColumnarAlignment fit = ColumnarAlignment.fit(pairs, o, planar, estName, par, () -> {
-            errors[0] = new double[m];
-            errors[1] = new double[m];
+            if (handed == null) {
+                errors[0] = new double[m];
+                errors[1] = new double[m];
+            }
         });
         AlignmentTransform tf = fit.transform();
         pairs.align(tf);
@@ -94,6 +111,21 @@ final class ColumnarEvaluator {
                 fit.warnings(), stats[0], stats[1], stats[2], stats[3], count,
                 count == 0 ? Double.NaN : rule.sumS() / count, count == 0 ? Double.NaN : rule.sumM() / count,
                 coverage[0]);
+    }
+
+    /**
+     * @return the reference's x, y and yaw columns to serve as the translation errors, the rotation
+     *     errors and the kept ATE rotations of m pairs, or null when they may not: only for the
+     *     interpolated association of a planar reference (whose columns nothing reads after the
+     *     interpolation) that shares no column with the estimate and whose columns hold m values
+     */
+    static double[][] handedOverColumns(Trajectory reference, Trajectory estimate, EvaluationOptions o, int m) {
+        if (o.association() != AssociationMethod.INTERPOLATE || !(reference instanceof PlanarTrajectory r)
+                || !(estimate instanceof PlanarTrajectory e) || r.sharesColumnsWith(e)) {
+            return null;
+        }
+        double[][] c = r.handOverColumns();
+        return c[0].length >= m && c[1].length >= m && c[2].length >= m ? c : null;
     }
 
     /** What the evaluator computed; {@link Evaluator} turns it into the report. */

@@ -60,12 +60,31 @@ public final class Evaluator {
      */
     public static EvaluationReport evaluate(LoadedTrajectory reference, LoadedTrajectory estimate,
             EvaluationOptions options, Parallelism parallelism) {
+        return evaluate(reference, estimate, options, parallelism, false);
+    }
+
+    /**
+     * As {@link #evaluate(LoadedTrajectory, LoadedTrajectory, EvaluationOptions, Parallelism)} (the
+     * same report, bit for bit) for a caller that owns the pair and never uses {@code reference}
+     * again: the reference is consumed, i.e. for an interpolated planar pair its x, y and yaw
+     * columns are overwritten by the errors instead of three arrays allocated (24 B per pose less at
+     * the peak). Only its stamps and size stay valid. With {@code --t-offset auto} (several
+     * evaluations of the pair) nothing is consumed.
+     */
+    public static EvaluationReport evaluateConsumingReference(LoadedTrajectory reference,
+            LoadedTrajectory estimate, EvaluationOptions options, Parallelism parallelism) {
+        return evaluate(reference, estimate, options, parallelism, true);
+    }
+
+    private static EvaluationReport evaluate(LoadedTrajectory reference, LoadedTrajectory estimate,
+            EvaluationOptions options, Parallelism parallelism, boolean consumeReference) {
         if (options.timeOffset() == TimeOffset.AUTO) {
             return withEstimatedOffset(reference, estimate, options, parallelism);
         }
         if (ColumnarEvaluator.applies(reference, estimate, options)) {
             ColumnarEvaluator.ReportParts p = ColumnarEvaluator.evaluate(reference.trajectory(),
-                    estimate.trajectory(), options, reference.source(), estimate.source(), parallelism);
+                    estimate.trajectory(), options, reference.source(), estimate.source(), parallelism,
+                    consumeReference);
             if (p != null) {
                 return report(reference, estimate, options, p.matched(), p.dropped(), p.droppedReference(),
                         p.maxGapS(), p.aMaxMps2(), p.alignment(), p.ateTrans(), p.ateRot(), p.rpeTrans(), p.rpeRot(),

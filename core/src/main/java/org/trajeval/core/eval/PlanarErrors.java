@@ -52,7 +52,7 @@ final class PlanarErrors {
     private final double[] ateRotation;
 
     private PlanarErrors(PlanarTrajectory est, int[] estIndex, int k0, InterpolatedReference interpolated,
-            PlanarTrajectory ref, int[] refIndex, double[] r, double[] t, double scale, int m) {
+            PlanarTrajectory ref, int[] refIndex, double[] r, double[] t, double scale, int m, double[] store) {
         this.est = est;
         this.estIndex = estIndex;
         this.k0 = k0;
@@ -66,28 +66,30 @@ final class PlanarErrors {
         this.tx = t[0];
         this.ty = t[1];
         this.scale = scale;
-        this.ateRotation = new double[m];
-        Arrays.fill(ateRotation, Double.NaN);
+        this.ateRotation = store != null ? store : new double[m];
+        Arrays.fill(ateRotation, 0, m, Double.NaN);
     }
 
     /**
      * @return the planar kernels of these pairs, or {@code null} when a trajectory is not planar or
      *     the alignment is not a rotation about +z without z translation (the matrix kernels apply)
+     * @param store an array of at least m values that keeps the ATE rotations the RPE computes
+     *     (overwritten), or null to allocate one
      */
     static PlanarErrors of(Object est, int[] estIndex, int k0, InterpolatedReference interpolated, Object ref,
-            int[] refIndex, AlignmentTransform tf, int m) {
+            int[] refIndex, AlignmentTransform tf, int m, double[] store) {
         if (!(est instanceof PlanarTrajectory pe) || !(ref instanceof PlanarTrajectory pr)
                 || interpolated != null && !interpolated.isPlanar()) {
             return null;
         }
         if (tf.model() == AlignmentModel.NONE) {
             return new PlanarErrors(pe, estIndex, k0, interpolated, pr, refIndex,
-                    new double[] {1, 0, 0, 0, 1, 0, 0, 0, 1}, new double[3], 1.0, m);
+                    new double[] {1, 0, 0, 0, 1, 0, 0, 0, 1}, new double[3], 1.0, m, store);
         }
         double[] r = tf.rotation();
         double[] t = tf.translation();
         boolean aboutZ = r[2] == 0.0 && r[5] == 0.0 && r[6] == 0.0 && r[7] == 0.0 && r[8] == 1.0 && t[2] == 0.0;
-        return aboutZ ? new PlanarErrors(pe, estIndex, k0, interpolated, pr, refIndex, r, t, tf.scale(), m) : null;
+        return aboutZ ? new PlanarErrors(pe, estIndex, k0, interpolated, pr, refIndex, r, t, tf.scale(), m, store) : null;
     }
 
     private int estAt(int k) {

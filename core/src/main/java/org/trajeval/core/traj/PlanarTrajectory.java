@@ -102,6 +102,31 @@ public final class PlanarTrajectory implements Trajectory {
         return Arrays.copyOf(yaw, n);
     }
 
+    /**
+     * Hands the x, y and yaw columns themselves (each at least {@link #size()} long, possibly longer)
+     * to a caller that owns this trajectory and reads none of its positions and yaws again: the
+     * caller may overwrite them, after which only the stamps and the size of this trajectory hold.
+     *
+     * @return {x, y, yaw}, not copies
+     */
+    public double[][] handOverColumns() {
+        return new double[][] {x, y, yaw};
+    }
+
+    /** @return true when this trajectory and {@code other} hold one of their columns in the same array */
+    public boolean sharesColumnsWith(PlanarTrajectory other) {
+        double[][] a = {t, x, y, yaw};
+        double[][] b = {other.t, other.x, other.y, other.yaw};
+        for (double[] u : a) {
+            for (double[] v : b) {
+                if (u == v) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
     @Override
     public void rotation(int i, double[] out, int o) {
         Rotations.aboutZ(yaw[i], out, o);

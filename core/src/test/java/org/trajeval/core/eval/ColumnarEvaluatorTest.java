@@ -156,7 +156,7 @@ class ColumnarEvaluatorTest {
     /** Without this, a fall-back to the general path would make every comparison trivially true. */
     private static void takesColumnarPath(LoadedTrajectory r, LoadedTrajectory e, EvaluationOptions o) {
         assertNotNull(ColumnarEvaluator.evaluate(r.trajectory(), e.trajectory(), o, r.source(), e.source(),
-                Parallelism.SEQUENTIAL), "the columnar evaluator declined " + o);
+                Parallelism.SEQUENTIAL, false), "the columnar evaluator declined " + o);
     }
 
     private static void same(EvaluationReport a, EvaluationReport b, String what) {

@@ -102,7 +102,7 @@ class SpatialThreadCountTest {
             EvaluationOptions o, ExecutorService pool, String what) {
         assertTrue(ColumnarEvaluator.applies(r, e, o), what);
         assertNotNull(ColumnarEvaluator.evaluate(r.trajectory(), e.trajectory(), o, r.source(), e.source(),
-                Parallelism.SEQUENTIAL), "the columnar evaluator declined " + what);
+                Parallelism.SEQUENTIAL, false), "the columnar evaluator declined " + what);
         EvaluationReport one = Evaluator.evaluate(r, e, o, Parallelism.SEQUENTIAL);
         String json = ReportJson.toJson(one);
         for (int threads = 2; threads <= 3; threads++) {
