@@ -69,11 +69,12 @@ final class RunIndex {
     void add(LedgerEntry e, long offset, int length) {
         long key = keyOf.applyAsLong(e.runId());
         int[] t = table;
-        int slot = slotOf(t, key, e.runId());
-        int earlier = (int) SLOT.getAcquire(t, slot) - 1;
+        Chain chain = chainOf(t, key, e.runId());
+        int slot = chain.slot();
+        int earlier = chain.latest();
         if (earlier < 0 && 4L * (runs + 1) > 3L * t.length) {
             t = grow(t);
-            slot = slotOf(t, key, e.runId());
+            slot = chainOf(t, key, e.runId()).slot();
         }
         int n = entries;
         if ((n >>> PAGE_BITS) == pages.length) {
@@ -98,7 +99,8 @@ final class RunIndex {
     /** @return the highest version indexed for the run id, 0 when none */
     int latestVersion(String runId) {
         int v = 0;
-        for (int e = latest(runId); e >= 0; e = earlier(e)) {
+        int[] t = table;
+        for (int e = chainOf(t, keyOf.applyAsLong(runId), runId).latest(); e >= 0; e = earlier(e)) {
             v = Math.max(v, version(e));
         }
         return v;
@@ -107,9 +109,12 @@ final class RunIndex {
     /** @return the entry of this run id and content hash, read back from its line, if indexed */
     Optional<LedgerEntry> find(String runId, String contentHash) {
         int h = contentHash.hashCode();
-        for (int e = latest(runId); e >= 0; e = earlier(e)) {
+        int[] t = table;
+        Chain chain = chainOf(t, keyOf.applyAsLong(runId), runId);
+        for (int e = chain.latest(); e >= 0; e = earlier(e)) {
             if (hashCode(e) == h) {
-                LedgerEntry line = lineOf(e);
+                // the latest version's line was read to confirm the run id: not read again
+                LedgerEntry line = e == chain.latest() ? chain.latestLine() : lineOf(e);
                 if (line != null && line.runId().equals(runId) && line.contentHash().equals(contentHash)) {
                     return Optional.of(line);
                 }
@@ -118,24 +123,25 @@ final class RunIndex {
         return Optional.empty();
     }
 
-    /** @return the entry index of the run id's latest version, -1 when none */
-    private int latest(String runId) {
-        int[] t = table;
-        return (int) SLOT.getAcquire(t, slotOf(t, keyOf.applyAsLong(runId), runId)) - 1;
+    /**
+     * A run's chain as one probe of the table found it: its slot (or the free slot where it would go), the
+     * entry index of its latest version (-1 when none) and that version's line, read to confirm the run id.
+     */
+    private record Chain(int slot, int latest, LedgerEntry latestLine) {
     }
 
-    /** @return the slot holding the run id's chain, or the free slot where it would go (linear probing) */
-    private int slotOf(int[] t, long key, String runId) {
+    /** @return the run id's chain in table {@code t} (linear probing from the key) */
+    private Chain chainOf(int[] t, long key, String runId) {
         int mask = t.length - 1;
         for (int i = (int) key & mask;; i = (i + 1) & mask) {
             int e = (int) SLOT.getAcquire(t, i) - 1;
             if (e < 0) {
-                return i;
+                return new Chain(i, -1, null);
             }
             if (word(e, 0) == key) {
                 LedgerEntry line = lineOf(e);
                 if (line != null && line.runId().equals(runId)) {
-                    return i;
+                    return new Chain(i, e, line);
                 }
             }
         }
